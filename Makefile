@@ -1,0 +1,34 @@
+# Thin wrapper over the CMake presets; every target installs what is missing first.
+# In CI (CI=true) the `ci` preset adds -Werror.
+PRESET ?= $(if $(CI),ci,release)
+JOBS ?= 2
+BUILD := build/$(PRESET)
+LOCUS := $(BUILD)/cli/locus
+
+.PHONY: all deps configure build demo test bench format clean
+
+all: build
+
+deps:
+	@scripts/install-deps
+
+configure: deps
+	@cmake --preset $(PRESET) >/dev/null
+
+build: configure
+	@cmake --build --preset $(PRESET) -j $(JOBS)
+
+demo: build
+	$(LOCUS) demo
+
+test: build
+	ctest --preset $(PRESET) -j $(JOBS)
+
+bench: build
+	$(LOCUS) bench groebner
+
+format:
+	@git ls-files '*.h' '*.cpp' | xargs clang-format -i
+
+clean:
+	rm -rf build

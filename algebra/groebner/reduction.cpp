@@ -1,0 +1,203 @@
+#include "algebra/groebner/reduction.h"
+
+#include <algorithm>
+
+namespace locus::algebra::detail {
+
+namespace {
+
+// Divides p and result by the gcd of all their coefficients (both are parts of one polynomial).
+void remove_common_content(IntegerPolynomial& p, IntegerPolynomial& result) {
+    Integer g;
+    for (const auto* poly : {&result, &p}) {
+        for (const auto& c : poly->coefficients) {
+            fmpz_gcd(g.get(), g.get(), c.get());
+            if (g.is_one()) {
+                return;
+            }
+        }
+    }
+    if (g.is_zero()) {
+        return;
+    }
+    for (auto* poly : {&result, &p}) {
+        for (auto& c : poly->coefficients) {
+            fmpz_divexact(c.get(), c.get(), g.get());
+        }
+    }
+}
+
+// Size of the coefficients that grow: the leading one of p (it meets every reducer) and the
+// first one of the result (every step scales it).
+std::size_t coefficient_bits(const IntegerPolynomial& p, const IntegerPolynomial& result) {
+    std::size_t bits = p.empty() ? 0 : fmpz_bits(p.coefficients[0].get());
+    if (!result.empty()) {
+        bits = std::max<std::size_t>(bits, fmpz_bits(result.coefficients[0].get()));
+    }
+    return bits;
+}
+
+}  // namespace
+
+long Reducer::find_reducer(const std::uint64_t* m, const std::vector<BasisElement>& basis) const {
+    const std::uint64_t mask = layout_.divisibility_mask(m);
+    const std::size_t w = layout_.words();
+    long best = -1;
+    for (std::size_t k = 0; k < basis.size(); ++k) {
+        const BasisElement& e = basis[k];
+        if (e.redundant || (e.poly.leading_mask & ~mask) != 0) {
+            continue;
+        }
+        if (!layout_.divides(e.poly.monomial(0, w), m)) {
+            continue;
+        }
+        if (best < 0 || e.poly.size() < basis[static_cast<std::size_t>(best)].poly.size()) {
+            best = static_cast<long>(k);
+        }
+    }
+    return best;
+}
+
+void Reducer::combine(IntegerPolynomial& p, std::size_t from, const Integer& a, const Integer& b,
+                      const std::uint64_t* m, const IntegerPolynomial& g) {
+    const std::size_t w = layout_.words();
+    IntegerPolynomial& out = scratch_;
+    out.monomials.clear();
+    out.coefficients.clear();
+    out.monomials.reserve((p.size() - from + g.size()) * w);
+    out.coefficients.reserve(p.size() - from + g.size());
+    product_.resize(w);
+    const bool scale = !a.is_one();
+    std::size_t i = from, j = 1;
+    if (j < g.size()) {
+        layout_.multiply(g.monomial(j, w), m, product_.data());
+    }
+    while (i < p.size() || j < g.size()) {
+        int cmp;
+        if (i == p.size()) {
+            cmp = -1;
+        } else if (j == g.size()) {
+            cmp = 1;
+        } else {
+            cmp = layout_.compare(p.monomial(i, w), product_.data());
+        }
+        if (cmp > 0) {
+            out.coefficients.emplace_back(std::move(p.coefficients[i]));
+            if (scale) {
+                fmpz_mul(out.coefficients.back().get(), out.coefficients.back().get(), a.get());
+            }
+            out.monomials.insert(out.monomials.end(), p.monomial(i, w), p.monomial(i, w) + w);
+            ++i;
+            continue;
+        }
+        if (cmp < 0) {
+            out.coefficients.emplace_back();
+            fmpz_mul(out.coefficients.back().get(), g.coefficients[j].get(), b.get());
+            fmpz_neg(out.coefficients.back().get(), out.coefficients.back().get());
+            out.monomials.insert(out.monomials.end(), product_.begin(), product_.end());
+        } else {
+            Integer& c = p.coefficients[i];
+            if (scale) {
+                fmpz_mul(c.get(), c.get(), a.get());
+            }
+            fmpz_submul(c.get(), g.coefficients[j].get(), b.get());
+            if (!c.is_zero()) {
+                out.coefficients.emplace_back(std::move(c));
+                out.monomials.insert(out.monomials.end(), product_.begin(), product_.end());
+            }
+            ++i;
+        }
+        if (++j < g.size()) {
+            layout_.multiply(g.monomial(j, w), m, product_.data());
+        }
+    }
+    std::swap(p.monomials, out.monomials);
+    std::swap(p.coefficients, out.coefficients);
+}
+
+IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisElement>& basis,
+                                  ReductionCounts& counts, bool tail) {
+    const std::size_t w = layout_.words();
+    IntegerPolynomial result;
+    result.sugar = p.sugar;
+    std::vector<std::uint64_t> m(w);
+    Integer g, a, b;
+    std::size_t head = 0;  // terms of p before `head` are already gone (moved or cancelled)
+    std::size_t bits_after_content = coefficient_bits(p, result);
+    while (head < p.size()) {
+        const std::uint64_t* lm = p.monomial(head, w);
+        const long k = find_reducer(lm, basis);
+        if (k < 0) {
+            if (!tail) {
+                break;
+            }
+            result.coefficients.emplace_back(std::move(p.coefficients[head]));
+            result.monomials.insert(result.monomials.end(), lm, lm + w);
+            ++head;
+            continue;
+        }
+        const IntegerPolynomial& r = basis[static_cast<std::size_t>(k)].poly;
+        layout_.divide(lm, r.monomial(0, w), m.data());
+        fmpz_gcd(g.get(), p.coefficients[head].get(), r.coefficients[0].get());
+        fmpz_divexact(a.get(), r.coefficients[0].get(), g.get());
+        fmpz_divexact(b.get(), p.coefficients[head].get(), g.get());
+        if (a.sign() < 0) {
+            fmpz_neg(a.get(), a.get());
+            fmpz_neg(b.get(), b.get());
+        }
+        if (!a.is_one()) {
+            for (auto& c : result.coefficients) {
+                fmpz_mul(c.get(), c.get(), a.get());
+            }
+        }
+        const std::uint32_t sugar = layout_.total_degree(m.data()) + r.sugar;
+        result.sugar = std::max(result.sugar, sugar);
+        combine(p, head + 1, a, b, m.data(), r);
+        head = 0;
+        ++counts.steps;
+        // Fraction-free steps multiply everything by a each time, but much of that growth is a
+        // common factor: divide it out whenever the coefficients have doubled in size since
+        // the last time (Singular does the same with p_Content during long reductions).
+        if (coefficient_bits(p, result) > 2 * bits_after_content + 64) {
+            remove_common_content(p, result);
+            bits_after_content = coefficient_bits(p, result);
+        }
+    }
+    if (!tail) {
+        // Keep the unreduced rest as it is (top reduction only).
+        for (std::size_t i = head; i < p.size(); ++i) {
+            result.coefficients.emplace_back(std::move(p.coefficients[i]));
+            result.monomials.insert(result.monomials.end(), p.monomial(i, w), p.monomial(i, w) + w);
+        }
+    }
+    make_primitive(result);
+    if (!result.empty()) {
+        result.leading_mask = layout_.divisibility_mask(result.monomials.data());
+    }
+    return result;
+}
+
+IntegerPolynomial Reducer::s_polynomial(const IntegerPolynomial& f, const IntegerPolynomial& g,
+                                        const std::uint64_t* lcm, std::uint32_t sugar) {
+    const std::size_t w = layout_.words();
+    std::vector<std::uint64_t> mf(w), mg(w);
+    layout_.divide(lcm, f.monomial(0, w), mf.data());
+    layout_.divide(lcm, g.monomial(0, w), mg.data());
+    Integer d, a, b;
+    fmpz_gcd(d.get(), f.coefficients[0].get(), g.coefficients[0].get());
+    fmpz_divexact(a.get(), g.coefficients[0].get(), d.get());  // multiplies f
+    fmpz_divexact(b.get(), f.coefficients[0].get(), d.get());  // multiplies g
+    // s = a·mf·f − b·mg·g; build a·mf·f[1..] and combine with g.
+    IntegerPolynomial s;
+    s.sugar = sugar;
+    s.monomials.resize(f.size() * w);
+    s.coefficients.resize(f.size());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        layout_.multiply(f.monomial(i, w), mf.data(), s.monomials.data() + i * w);
+        fmpz_mul(s.coefficients[i].get(), f.coefficients[i].get(), a.get());
+    }
+    combine(s, 1, Integer(1), b, mg.data(), g);
+    return s;
+}
+
+}  // namespace locus::algebra::detail

@@ -1,0 +1,52 @@
+// Internal to the Gröbner code: fraction-free reduction of integer polynomials by a basis.
+//
+// One step replaces p by a·p − b·m·g, where lt(m·g) and lt(p) have the same monomial and
+// a = lc(g)/gcd, b = lc(p)/gcd, so no fractions appear; terms already moved to the result are
+// scaled by a as well, so the result stays a multiple of p modulo the ideal. Among the basis
+// elements whose leading monomial divides, the one with fewest terms is used (a cheap and
+// effective heuristic; Singular's "length" selection).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "algebra/groebner/pair_criteria.h"
+
+namespace locus::algebra::detail {
+
+struct ReductionCounts {
+    std::size_t steps = 0;  // a·p − b·m·g operations
+};
+
+class Reducer {
+  public:
+    explicit Reducer(const MonomialLayout& layout) : layout_(layout) {}
+
+    // Fully reduces p (leading and tail terms) by the non-redundant elements of `basis`; the
+    // result is primitive with positive leading coefficient, sugar updated, or empty.
+    IntegerPolynomial reduce(IntegerPolynomial p, const std::vector<BasisElement>& basis,
+                             ReductionCounts& counts, bool tail = true);
+
+    // The S-polynomial of basis[i] and basis[j] (fraction-free), with sugar `sugar`.
+    IntegerPolynomial s_polynomial(const IntegerPolynomial& f, const IntegerPolynomial& g,
+                                   const std::uint64_t* lcm, std::uint32_t sugar);
+
+  private:
+    // Index of the shortest non-redundant element whose leading monomial divides m, or -1.
+    long find_reducer(const std::uint64_t* m, const std::vector<BasisElement>& basis) const;
+    // out = a·p[from..] − b·m·g[1..] (g's leading term cancels against p's, skipped by caller).
+    void combine(IntegerPolynomial& p, std::size_t from, const Integer& a, const Integer& b,
+                 const std::uint64_t* m, const IntegerPolynomial& g);
+
+    const MonomialLayout& layout_;
+    IntegerPolynomial scratch_;
+    std::vector<std::uint64_t> product_;
+};
+
+// Reduced-basis step (reduced_basis.cpp): drops elements whose leading monomial is divisible by
+// another's (of equal ones, the first is kept), reduces each tail by the others, and returns
+// the survivors sorted by leading monomial ascending. Precondition: a Gröbner basis.
+std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
+                                           const MonomialLayout& layout, ReductionCounts& counts);
+
+}  // namespace locus::algebra::detail

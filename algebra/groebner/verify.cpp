@@ -1,0 +1,85 @@
+#include "algebra/groebner/verify.h"
+
+#include "algebra/division.h"
+#include "algebra/print.h"
+
+namespace locus::algebra {
+
+Polynomial s_polynomial(const Polynomial& f, const Polynomial& g) {
+    require_same_ring(f, g);
+    const MonomialLayout& layout = f.ring()->layout();
+    std::vector<std::uint64_t> lcm(layout.words()), mf(layout.words()), mg(layout.words());
+    layout.lcm(f.leading_monomial(), g.leading_monomial(), lcm.data());
+    layout.divide(lcm.data(), f.leading_monomial(), mf.data());
+    layout.divide(lcm.data(), g.leading_monomial(), mg.data());
+    Rational cf, cg;
+    fmpq_inv(cf.get(), f.leading_coefficient().get());
+    fmpq_inv(cg.get(), g.leading_coefficient().get());
+    return f.times_term(cf, mf.data()).minus_term_times(cg, mg.data(), g);
+}
+
+BasisCheck check_groebner_basis(std::span<const Polynomial> basis) {
+    BasisCheck check;
+    for (std::size_t i = 0; i < basis.size(); ++i) {
+        for (std::size_t j = i + 1; j < basis.size(); ++j) {
+            const MonomialLayout& layout = basis[i].ring()->layout();
+            if (basis[i].is_zero() || basis[j].is_zero() ||
+                layout.coprime(basis[i].leading_monomial(), basis[j].leading_monomial())) {
+                continue;
+            }
+            ++check.pairs_checked;
+            const Polynomial r = normal_form(s_polynomial(basis[i], basis[j]), basis);
+            if (!r.is_zero()) {
+                check.ok = false;
+                check.failure = "S-polynomial of elements " + std::to_string(i + 1) + " and " +
+                                std::to_string(j + 1) + " has normal form " + to_string(r);
+                return check;
+            }
+        }
+    }
+    return check;
+}
+
+BasisCheck check_groebner_basis(std::span<const Polynomial> basis,
+                                std::span<const Polynomial> generators) {
+    BasisCheck check;
+    for (std::size_t i = 0; i < generators.size(); ++i) {
+        ++check.generators_checked;
+        const Polynomial r = normal_form(generators[i], basis);
+        if (!r.is_zero()) {
+            check.ok = false;
+            check.failure =
+                "generator " + std::to_string(i + 1) + " has normal form " + to_string(r);
+            return check;
+        }
+    }
+    BasisCheck pairs = check_groebner_basis(basis);
+    pairs.generators_checked = check.generators_checked;
+    return pairs;
+}
+
+bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polynomial> generators) {
+    return check_groebner_basis(basis, generators).ok;
+}
+
+bool is_reduced(std::span<const Polynomial> basis) {
+    for (std::size_t i = 0; i < basis.size(); ++i) {
+        if (basis[i].is_zero() || !basis[i].leading_coefficient().is_one()) {
+            return false;
+        }
+        const MonomialLayout& layout = basis[i].ring()->layout();
+        for (std::size_t j = 0; j < basis.size(); ++j) {
+            if (i == j) {
+                continue;
+            }
+            for (std::size_t t = 0; t < basis[i].num_terms(); ++t) {
+                if (layout.divides(basis[j].leading_monomial(), basis[i].monomial(t))) {
+                    return false;
+                }
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace locus::algebra

@@ -1,0 +1,36 @@
+// Independent checks of Gröbner bases, shared by the tests and `locus groebner --check`.
+//
+// They use the rational division algorithm (division.h), not the fraction-free reducer that
+// computed the basis, so a bug in one is not hidden by the same bug in the other. Buchberger's
+// criterion (CLO, IVA ch. 2 §6, Theorem 6): G is a Gröbner basis iff every S-polynomial
+// reduces to zero; pairs with coprime leading monomials are skipped (CLO ch. 2 §9, Prop. 4).
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "algebra/polynomial.h"
+
+namespace locus::algebra {
+
+struct BasisCheck {
+    bool ok = true;
+    std::size_t generators_checked = 0, pairs_checked = 0;
+    std::string failure;  // which generator or pair failed, when !ok
+};
+
+// Every S-polynomial of `basis` reduces to zero.
+BasisCheck check_groebner_basis(std::span<const Polynomial> basis);
+// check_groebner_basis(basis), and every generator reduces to zero, so the ideal of
+// `generators` is contained in the ideal of `basis`. (The converse, basis ⊆ ideal, holds by
+// construction for a computed basis; ideal_ops.h checks it when comparing ideals.)
+BasisCheck check_groebner_basis(std::span<const Polynomial> basis,
+                                std::span<const Polynomial> generators);
+
+bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polynomial> generators);
+// Monic, and no monomial of any element is divisible by another element's leading monomial.
+bool is_reduced(std::span<const Polynomial> basis);
+// S-polynomial over Q: (lcm/lt(f))·f − (lcm/lt(g))·g.
+Polynomial s_polynomial(const Polynomial& f, const Polynomial& g);
+
+}  // namespace locus::algebra

@@ -1,0 +1,372 @@
+#include "algebra/ideal_ops.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "algebra/division.h"
+#include "algebra/error.h"
+#include "algebra/groebner/verify.h"
+
+namespace locus::algebra {
+namespace {
+
+const RingPtr& ring_of(Generators g, const char* what) {
+    if (g.empty()) {
+        throw InputError(what, "needs at least one generator (to know the ring)");
+    }
+    for (const auto& p : g) {
+        require_same_ring(g[0], p);
+    }
+    return g[0].ring();
+}
+
+std::vector<Polynomial> basis_of(Generators g) {
+    GroebnerResult r = groebner(g);
+    return std::move(r.basis);
+}
+
+// Lifts polynomials of `small` into `big` = small + one variable at the end.
+std::vector<Polynomial> lift_into(Generators polys, const RingPtr& big) {
+    std::vector<std::size_t> map(polys.empty() ? 0 : polys[0].ring()->num_vars());
+    std::iota(map.begin(), map.end(), 0);
+    std::vector<Polynomial> out;
+    for (const auto& p : polys) {
+        out.push_back(p.in_ring(big, map));
+    }
+    return out;
+}
+
+// Drops the last variable of `big` (which must not occur) to get back to `small`.
+std::vector<Polynomial> drop_last_variable(Generators polys, const RingPtr& small) {
+    std::vector<std::size_t> map(small->num_vars() + 1);
+    std::iota(map.begin(), map.end(), 0);
+    map.back() = 0;  // the eliminated variable has exponent 0 in every term
+    std::vector<Polynomial> out;
+    for (const auto& p : polys) {
+        out.push_back(p.in_ring(small, map));
+    }
+    return out;
+}
+
+// Generators (in `big`, under elim(last)) → reduced basis of the elimination ideal in `small`.
+std::vector<Polynomial> eliminate_last(std::vector<Polynomial> gens, const RingPtr& small) {
+    GroebnerResult r = groebner(gens);
+    const std::size_t last = small->num_vars();
+    std::vector<Polynomial> kept;
+    for (auto& g : r.basis) {
+        if (!g.contains_variable(last)) {
+            kept.push_back(std::move(g));
+        }
+    }
+    std::vector<Polynomial> back = drop_last_variable(kept, small);
+    if (back.empty()) {
+        return back;
+    }
+    return basis_of(back);
+}
+
+// Buchberger over Q that remembers, for every basis element, its cofactors with respect to the
+// original generators. Plain (product criterion only): it serves certificates, not speed.
+struct TrackedElement {
+    Polynomial poly;
+    std::vector<Polynomial> cofactors;
+};
+
+TrackedElement reduce_tracked(TrackedElement p, const std::vector<TrackedElement>& basis) {
+    std::vector<Polynomial> divisors;
+    for (const auto& b : basis) {
+        divisors.push_back(b.poly);
+    }
+    DivisionResult d = divide(p.poly, divisors);
+    for (std::size_t k = 0; k < basis.size(); ++k) {
+        if (d.quotients[k].is_zero()) {
+            continue;
+        }
+        for (std::size_t i = 0; i < p.cofactors.size(); ++i) {
+            p.cofactors[i] -= d.quotients[k] * basis[k].cofactors[i];
+        }
+    }
+    p.poly = std::move(d.remainder);
+    return p;
+}
+
+std::vector<TrackedElement> tracked_groebner(Generators generators) {
+    const RingPtr& ring = generators[0].ring();
+    const std::size_t m = generators.size();
+    std::vector<TrackedElement> basis;
+    for (std::size_t i = 0; i < m; ++i) {
+        if (generators[i].is_zero()) {
+            continue;
+        }
+        TrackedElement e{generators[i], std::vector<Polynomial>(m, Polynomial(ring))};
+        e.cofactors[i] = Polynomial::constant(ring, Rational(1));
+        basis.push_back(std::move(e));
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t j = 0; j < basis.size(); ++j) {
+        for (std::size_t i = 0; i < j; ++i) {
+            pairs.emplace_back(i, j);
+        }
+    }
+    const MonomialLayout& layout = ring->layout();
+    std::vector<std::uint64_t> lcm(layout.words()), mi(layout.words()), mj(layout.words());
+    while (!pairs.empty()) {
+        const auto [i, j] = pairs.back();
+        pairs.pop_back();
+        const Polynomial& f = basis[i].poly;
+        const Polynomial& g = basis[j].poly;
+        if (layout.coprime(f.leading_monomial(), g.leading_monomial())) {
+            continue;
+        }
+        layout.lcm(f.leading_monomial(), g.leading_monomial(), lcm.data());
+        layout.divide(lcm.data(), f.leading_monomial(), mi.data());
+        layout.divide(lcm.data(), g.leading_monomial(), mj.data());
+        Rational ci, cj;
+        fmpq_inv(ci.get(), f.leading_coefficient().get());
+        fmpq_inv(cj.get(), g.leading_coefficient().get());
+        TrackedElement s{f.times_term(ci, mi.data()).minus_term_times(cj, mj.data(), g), {}};
+        for (std::size_t k = 0; k < m; ++k) {
+            s.cofactors.push_back(basis[i].cofactors[k].times_term(ci, mi.data()) -
+                                  basis[j].cofactors[k].times_term(cj, mj.data()));
+        }
+        s = reduce_tracked(std::move(s), basis);
+        if (s.poly.is_zero()) {
+            continue;
+        }
+        basis.push_back(std::move(s));
+        for (std::size_t k = 0; k + 1 < basis.size(); ++k) {
+            pairs.emplace_back(k, basis.size() - 1);
+        }
+    }
+    return basis;
+}
+
+}  // namespace
+
+RingPtr ring_with_extra_variable(const RingPtr& ring, const std::string& base) {
+    std::string name = base;
+    for (int k = 1; ring->variable_index(name); ++k) {
+        name = base + std::to_string(k);
+    }
+    std::vector<std::string> names = ring->variable_names();
+    names.push_back(name);
+    const std::size_t n = names.size();
+    return PolyRing::make(std::move(names), MonomialOrder::elimination(n, {n - 1}));
+}
+
+MembershipCertificate ideal_membership(const Polynomial& f, Generators generators) {
+    ring_of(generators, "membership");
+    require_same_ring(generators[0], f);
+    MembershipCertificate cert{false, {}, Polynomial(f.ring())};
+    cert.remainder = normal_form(f, basis_of(generators));
+    if (!cert.remainder.is_zero()) {
+        return cert;
+    }
+    const std::vector<TrackedElement> tracked = tracked_groebner(generators);
+    TrackedElement t{f, std::vector<Polynomial>(generators.size(), Polynomial(f.ring()))};
+    t = reduce_tracked(std::move(t), tracked);
+    // reduce_tracked computed f − Σ cofactors·gens = remainder = 0, with cofactors negated.
+    for (auto& c : t.cofactors) {
+        c = -c;
+    }
+    Polynomial sum(f.ring());
+    for (std::size_t i = 0; i < generators.size(); ++i) {
+        sum += t.cofactors[i] * generators[i];
+    }
+    if (!t.poly.is_zero() || !(sum == f)) {
+        throw Error("internal error: membership certificate does not check");
+    }
+    cert.is_member = true;
+    cert.cofactors = std::move(t.cofactors);
+    return cert;
+}
+
+std::vector<Polynomial> eliminate(Generators generators, std::span<const std::size_t> variables,
+                                  const GroebnerOptions& options) {
+    const RingPtr& ring = ring_of(generators, "eliminate");
+    const RingPtr elim_ring = ring->with_order(MonomialOrder::elimination(
+        ring->num_vars(), std::vector<std::size_t>(variables.begin(), variables.end())));
+    std::vector<Polynomial> moved;
+    for (const auto& g : generators) {
+        moved.push_back(g.in_ring(elim_ring));
+    }
+    GroebnerResult r = groebner(moved, options);
+    if (r.outcome != GroebnerOutcome::complete) {
+        throw Timeout("elimination stopped before its Gröbner basis was complete");
+    }
+    std::vector<Polynomial> kept;
+    for (const auto& g : r.basis) {
+        if (std::none_of(variables.begin(), variables.end(),
+                         [&](std::size_t v) { return g.contains_variable(v); })) {
+            kept.push_back(g.in_ring(ring));
+        }
+    }
+    return kept.empty() ? kept : basis_of(kept);
+}
+
+std::vector<Polynomial> ideal_sum(Generators i, Generators j) {
+    std::vector<Polynomial> all(i.begin(), i.end());
+    all.insert(all.end(), j.begin(), j.end());
+    ring_of(all, "sum");
+    return basis_of(all);
+}
+
+std::vector<Polynomial> ideal_product(Generators i, Generators j) {
+    ring_of(i, "product");
+    ring_of(j, "product");
+    std::vector<Polynomial> all;
+    for (const auto& f : i) {
+        for (const auto& g : j) {
+            all.push_back(f * g);
+        }
+    }
+    return basis_of(all);
+}
+
+std::vector<Polynomial> ideal_intersection(Generators i, Generators j) {
+    const RingPtr& ring = ring_of(i, "intersection");
+    ring_of(j, "intersection");
+    const RingPtr big = ring_with_extra_variable(ring, "t");
+    const Polynomial t = Polynomial::variable(big, ring->num_vars());
+    const Polynomial one_minus_t = Polynomial::constant(big, Rational(1)) - t;
+    std::vector<Polynomial> gens;
+    for (const auto& f : lift_into(i, big)) {
+        gens.push_back(t * f);
+    }
+    for (const auto& g : lift_into(j, big)) {
+        gens.push_back(one_minus_t * g);
+    }
+    return eliminate_last(std::move(gens), ring);
+}
+
+std::vector<Polynomial> ideal_quotient(Generators i, Generators j) {
+    const RingPtr& ring = ring_of(i, "quotient");
+    ring_of(j, "quotient");
+    std::vector<Polynomial> result;
+    bool first = true;
+    for (const auto& g : j) {
+        if (g.is_zero()) {
+            continue;  // I : 0 = whole ring, neutral for the intersection
+        }
+        const Polynomial single[] = {g};
+        std::vector<Polynomial> part;
+        for (const auto& h : ideal_intersection(i, single)) {
+            part.push_back(exact_quotient(h, g));
+        }
+        part = basis_of(part);
+        result = first ? part : ideal_intersection(result, part);
+        first = false;
+    }
+    if (first) {
+        return {Polynomial::constant(ring, Rational(1))};
+    }
+    return result;
+}
+
+std::vector<Polynomial> saturation(Generators i, Generators j) {
+    const RingPtr& ring = ring_of(i, "saturation");
+    ring_of(j, "saturation");
+    std::vector<Polynomial> result;
+    bool first = true;
+    const RingPtr big = ring_with_extra_variable(ring, "t");
+    const Polynomial t = Polynomial::variable(big, ring->num_vars());
+    for (const auto& g : j) {
+        if (g.is_zero()) {
+            continue;
+        }
+        std::vector<Polynomial> gens = lift_into(i, big);
+        const Polynomial g_big[] = {g};
+        gens.push_back(Polynomial::constant(big, Rational(1)) - t * lift_into(g_big, big)[0]);
+        std::vector<Polynomial> part = eliminate_last(std::move(gens), ring);
+        result = first ? part : ideal_intersection(result, part);
+        first = false;
+    }
+    if (first) {
+        return {Polynomial::constant(ring, Rational(1))};
+    }
+    return result;
+}
+
+bool radical_membership(const Polynomial& f, Generators generators) {
+    const RingPtr& ring = ring_of(generators, "radical membership");
+    require_same_ring(generators[0], f);
+    const RingPtr big = ring_with_extra_variable(ring, "y");
+    std::vector<Polynomial> gens = lift_into(generators, big);
+    const Polynomial f_big[] = {f};
+    const Polynomial y = Polynomial::variable(big, ring->num_vars());
+    gens.push_back(Polynomial::constant(big, Rational(1)) - y * lift_into(f_big, big)[0]);
+    const auto basis = basis_of(gens);
+    return basis.size() == 1 && basis[0].is_constant();
+}
+
+bool ideal_contains(Generators i, Generators j) {
+    ring_of(i, "containment");
+    const std::vector<Polynomial> basis = basis_of(i);
+    return std::all_of(j.begin(), j.end(),
+                       [&](const Polynomial& g) { return normal_form(g, basis).is_zero(); });
+}
+
+bool ideal_equal(Generators i, Generators j) {
+    return ideal_contains(i, j) && ideal_contains(j, i);
+}
+
+DimensionReport zero_dimension_test(Generators generators) {
+    const RingPtr& ring = ring_of(generators, "dimension");
+    const std::vector<Polynomial> basis = basis_of(generators);
+    DimensionReport report;
+    if (basis.size() == 1 && basis[0].is_constant()) {
+        report.kind = Dimension::unit_ideal;
+        return report;
+    }
+    const std::size_t n = ring->num_vars();
+    std::vector<std::uint32_t> pure_power(n, 0);  // least d with x_v^d a leading monomial
+    for (const auto& g : basis) {
+        const auto e = g.exponents(0);
+        std::size_t nonzero = 0, var = 0;
+        for (std::size_t v = 0; v < n; ++v) {
+            if (e[v] != 0) {
+                ++nonzero;
+                var = v;
+            }
+        }
+        if (nonzero == 1 && (pure_power[var] == 0 || e[var] < pure_power[var])) {
+            pure_power[var] = e[var];
+        }
+    }
+    if (std::any_of(pure_power.begin(), pure_power.end(), [](std::uint32_t d) { return d == 0; })) {
+        report.kind = Dimension::positive;
+        return report;
+    }
+    report.kind = Dimension::zero_dimensional;
+    // Count standard monomials: exponent vectors below the pure powers that no leading
+    // monomial divides (an odometer over the box).
+    std::vector<std::vector<std::uint32_t>> leading;
+    for (const auto& g : basis) {
+        leading.push_back(g.exponents(0));
+    }
+    std::vector<std::uint32_t> e(n, 0);
+    std::size_t count = 0;
+    while (true) {
+        const bool standard = std::none_of(leading.begin(), leading.end(), [&](const auto& lm) {
+            for (std::size_t v = 0; v < n; ++v) {
+                if (lm[v] > e[v]) {
+                    return false;
+                }
+            }
+            return true;
+        });
+        count += standard ? 1 : 0;
+        std::size_t v = 0;
+        while (v < n && ++e[v] == pure_power[v]) {
+            e[v] = 0;
+            ++v;
+        }
+        if (v == n) {
+            break;
+        }
+    }
+    report.quotient_dimension = count;
+    return report;
+}
+
+}  // namespace locus::algebra

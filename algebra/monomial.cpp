@@ -1,0 +1,159 @@
+#include "algebra/monomial.h"
+
+#include <string>
+
+#include "algebra/error.h"
+
+namespace locus::algebra {
+
+MonomialLayout::MonomialLayout(const MonomialOrder& order) : order_(order) {
+    const auto& fields = order_.fields();
+    words_ = (fields.size() + fields_per_word - 1) / fields_per_word;
+    if (words_ == 0) {
+        words_ = 1;  // the ring with no variables still stores the monomial 1
+    }
+    compare_mask_.assign(words_, 0);
+    variable_mask_.assign(words_, 0);
+    field_of_variable_.assign(order_.num_vars(), 0);
+    for (unsigned i = 0; i < fields_per_word; ++i) {
+        guard_mask_ |= std::uint64_t{1} << (i * field_bits + field_bits - 1);
+    }
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        const std::uint64_t value_bits = std::uint64_t{max_field_value} << shift(f);
+        if (fields[f].is_variable()) {
+            field_of_variable_[fields[f].variable] = f;
+            variable_mask_[f / fields_per_word] |= value_bits;
+            if (fields[f].negated) {
+                compare_mask_[f / fields_per_word] |= value_bits;
+            }
+        }
+    }
+}
+
+void MonomialLayout::throw_overflow() {
+    throw ExponentOverflow("a packed exponent or weighted degree exceeds " +
+                           std::to_string(max_field_value));
+}
+
+void MonomialLayout::pack(std::span<const std::uint32_t> e, std::uint64_t* out) const {
+    const auto& fields = order_.fields();
+    for (std::size_t w = 0; w < words_; ++w) {
+        out[w] = 0;
+    }
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        std::uint64_t value = 0;
+        if (fields[f].is_variable()) {
+            value = e[fields[f].variable];
+        } else {
+            for (std::size_t i = 0; i < e.size(); ++i) {
+                value += static_cast<std::uint64_t>(fields[f].weights[i]) * e[i];
+                if (value > max_field_value) {
+                    break;
+                }
+            }
+        }
+        if (value > max_field_value) {
+            throw_overflow();
+        }
+        out[f / fields_per_word] |= value << shift(f);
+    }
+}
+
+void MonomialLayout::unpack(const std::uint64_t* m, std::span<std::uint32_t> e) const {
+    for (std::size_t i = 0; i < num_vars(); ++i) {
+        e[i] = field(m, field_of_variable_[i]);
+    }
+}
+
+std::uint32_t MonomialLayout::exponent(const std::uint64_t* m, std::size_t var) const {
+    return field(m, field_of_variable_[var]);
+}
+
+std::uint32_t MonomialLayout::total_degree(const std::uint64_t* m) const {
+    std::uint32_t d = 0;
+    for (std::size_t i = 0; i < num_vars(); ++i) {
+        d += field(m, field_of_variable_[i]);
+    }
+    return d;
+}
+
+namespace {
+
+// Per-field mask of the fields where a >= b (value bits set), from the guard-bit trick.
+std::uint64_t fields_at_least(std::uint64_t a, std::uint64_t b, std::uint64_t guard) {
+    const std::uint64_t ge = ((a | guard) - b) & guard;
+    return ge - (ge >> (MonomialLayout::field_bits - 1));
+}
+
+}  // namespace
+
+void MonomialLayout::lcm(const std::uint64_t* a, const std::uint64_t* b, std::uint64_t* out) const {
+    for (std::size_t w = 0; w < words_; ++w) {
+        const std::uint64_t a_ge_b = fields_at_least(a[w], b[w], guard_mask_);
+        out[w] = (a[w] & a_ge_b) | (b[w] & ~a_ge_b & ~guard_mask_);
+    }
+    // Linear fields are not max-compatible: recompute them from the exponents.
+    const auto& fields = order_.fields();
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        if (fields[f].is_variable()) {
+            continue;
+        }
+        std::uint64_t value = 0;
+        for (std::size_t i = 0; i < num_vars(); ++i) {
+            value += static_cast<std::uint64_t>(fields[f].weights[i]) *
+                     field(out, field_of_variable_[i]);
+        }
+        if (value > max_field_value) {
+            throw_overflow();
+        }
+        const unsigned s = shift(f);
+        out[f / fields_per_word] =
+            (out[f / fields_per_word] & ~(std::uint64_t{0xFFFF} << s)) | (value << s);
+    }
+}
+
+void MonomialLayout::gcd(const std::uint64_t* a, const std::uint64_t* b, std::uint64_t* out) const {
+    for (std::size_t w = 0; w < words_; ++w) {
+        const std::uint64_t a_ge_b = fields_at_least(a[w], b[w], guard_mask_);
+        out[w] = (b[w] & a_ge_b) | (a[w] & ~a_ge_b & ~guard_mask_);
+    }
+    const auto& fields = order_.fields();
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        if (fields[f].is_variable()) {
+            continue;
+        }
+        std::uint64_t value = 0;
+        for (std::size_t i = 0; i < num_vars(); ++i) {
+            value += static_cast<std::uint64_t>(fields[f].weights[i]) *
+                     field(out, field_of_variable_[i]);
+        }
+        const unsigned s = shift(f);
+        out[f / fields_per_word] =
+            (out[f / fields_per_word] & ~(std::uint64_t{0xFFFF} << s)) | (value << s);
+    }
+}
+
+bool MonomialLayout::coprime(const std::uint64_t* a, const std::uint64_t* b) const {
+    // Coprime iff for every variable field one of the two is zero: min(a,b) == 0 per field.
+    for (std::size_t w = 0; w < words_; ++w) {
+        const std::uint64_t x = a[w] & variable_mask_[w], y = b[w] & variable_mask_[w];
+        const std::uint64_t x_ge_y = fields_at_least(x, y, guard_mask_);
+        const std::uint64_t minimum = (y & x_ge_y) | (x & ~x_ge_y & ~guard_mask_);
+        if (minimum != 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+std::uint64_t MonomialLayout::divisibility_mask(const std::uint64_t* m) const {
+    std::uint64_t mask = 0;
+    for (std::size_t i = 0; i < num_vars(); ++i) {
+        if (field(m, field_of_variable_[i]) != 0) {
+            mask |= std::uint64_t{1} << (i % 64);
+        }
+    }
+    return mask;
+}
+
+}  // namespace locus::algebra

@@ -1,0 +1,371 @@
+#include "algebra/parse.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "algebra/error.h"
+
+namespace locus::algebra {
+namespace {
+
+enum class TokenKind { number, identifier, symbol, end };
+
+struct Token {
+    TokenKind kind = TokenKind::end;
+    std::string text;
+    std::size_t line = 1, column = 1;
+};
+
+std::string describe(const Token& t) {
+    return t.kind == TokenKind::end ? std::string("end of input") : "'" + t.text + "'";
+}
+
+class Lexer {
+  public:
+    Lexer(std::string_view text, std::size_t line, std::size_t column)
+        : text_(text), line_(line), column_(column) {}
+
+    Token next() {
+        skip_space();
+        Token t;
+        t.line = line_;
+        t.column = column_;
+        if (pos_ >= text_.size()) {
+            return t;
+        }
+        const char c = text_[pos_];
+        const auto is_digit = [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); };
+        if (is_digit(c) || (c == '.' && pos_ + 1 < text_.size() && is_digit(text_[pos_ + 1]))) {
+            t.kind = TokenKind::number;
+            while (pos_ < text_.size() && (is_digit(text_[pos_]) || text_[pos_] == '.')) {
+                advance();
+            }
+        } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+            t.kind = TokenKind::identifier;
+            while (pos_ < text_.size() &&
+                   (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) {
+                advance();
+            }
+        } else {
+            t.kind = TokenKind::symbol;
+            advance();
+            t.text = std::string(1, c);
+            return t;
+        }
+        t.text = std::string(text_.substr(start_, pos_ - start_));
+        return t;
+    }
+
+  private:
+    void skip_space() {
+        while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+            advance();
+        }
+        start_ = pos_;
+    }
+    void advance() {
+        if (text_[pos_] == '\n') {
+            ++line_;
+            column_ = 1;
+        } else {
+            ++column_;
+        }
+        ++pos_;
+    }
+
+    std::string_view text_;
+    std::size_t pos_ = 0, start_ = 0;
+    std::size_t line_, column_;
+};
+
+// Recursive descent over:  sum := product (('+'|'-') product)*
+//   product := unary (('*'|'/') unary)*   unary := ('+'|'-') unary | power
+//   power := atom ('^' integer)?          atom := number | variable | '(' sum ')'
+class PolynomialParser {
+  public:
+    PolynomialParser(std::string_view text, const RingPtr& ring, std::size_t line,
+                     std::size_t column)
+        : lexer_(text, line, column), ring_(ring) {
+        token_ = lexer_.next();
+    }
+
+    Polynomial parse() {
+        if (token_.kind == TokenKind::end) {
+            fail("a polynomial");
+        }
+        Polynomial p = sum();
+        if (token_.kind != TokenKind::end) {
+            fail(token_.text == ")" ? "end of input (unbalanced ')')"
+                                    : "an operator (+ - * / ^) or end of input");
+        }
+        return p;
+    }
+
+  private:
+    [[noreturn]] void fail(const std::string& expected) {
+        throw ParseError(token_.line, token_.column, expected, describe(token_));
+    }
+    bool is_symbol(char c) const { return token_.kind == TokenKind::symbol && token_.text[0] == c; }
+    // Runs an arithmetic step, reporting exponent overflow at the operator.
+    template <class F>
+    Polynomial guarded(const Token& op, F&& step) {
+        try {
+            return step();
+        } catch (const ExponentOverflow&) {
+            throw ParseError(
+                op.line, op.column,
+                "exponents of at most " + std::to_string(MonomialLayout::max_field_value),
+                "a product that overflows them");
+        }
+    }
+
+    Polynomial sum() {
+        Polynomial p = product();
+        while (is_symbol('+') || is_symbol('-')) {
+            const bool minus = is_symbol('-');
+            token_ = lexer_.next();
+            Polynomial q = product();
+            p = minus ? p - q : p + q;
+        }
+        return p;
+    }
+
+    Polynomial product() {
+        Polynomial p = unary();
+        while (is_symbol('*') || is_symbol('/')) {
+            const Token op = token_;
+            token_ = lexer_.next();
+            const Token divisor_start = token_;
+            Polynomial q = unary();
+            if (op.text == "*") {
+                p = guarded(op, [&] { return p * q; });
+            } else {
+                if (!q.is_constant()) {
+                    throw ParseError(divisor_start.line, divisor_start.column,
+                                     "a constant divisor (division only by numbers)",
+                                     describe(divisor_start));
+                }
+                if (q.is_zero()) {
+                    throw ParseError(divisor_start.line, divisor_start.column, "a non-zero divisor",
+                                     describe(divisor_start));
+                }
+                Rational inverse;
+                fmpq_inv(inverse.get(), q.leading_coefficient().get());
+                p *= inverse;
+            }
+        }
+        return p;
+    }
+
+    Polynomial unary() {
+        if (is_symbol('-')) {
+            token_ = lexer_.next();
+            return -unary();
+        }
+        if (is_symbol('+')) {
+            token_ = lexer_.next();
+            return unary();
+        }
+        return power();
+    }
+
+    Polynomial power() {
+        Polynomial base = atom();
+        if (!is_symbol('^')) {
+            return base;
+        }
+        const Token op = token_;
+        token_ = lexer_.next();
+        const std::string expected = "a non-negative integer exponent";
+        if (token_.kind != TokenKind::number || token_.text.find('.') != std::string::npos) {
+            fail(expected);
+        }
+        const std::string digits = token_.text;
+        const std::uint32_t limit = MonomialLayout::max_field_value;
+        if (digits.size() > 9 || std::stoul(digits) > limit) {
+            fail("an exponent of at most " + std::to_string(limit));
+        }
+        const auto k = static_cast<unsigned>(std::stoul(digits));
+        const Token exponent_token = token_;
+        token_ = lexer_.next();
+        if (is_symbol('^')) {
+            fail("no second '^' (write (a^b)^c)");
+        }
+        try {
+            return base.pow(k);
+        } catch (const ExponentOverflow&) {
+            throw ParseError(exponent_token.line, exponent_token.column,
+                             "an exponent of at most " + std::to_string(limit),
+                             "'" + digits + "' (the power overflows)");
+        }
+    }
+
+    Polynomial atom() {
+        if (token_.kind == TokenKind::number) {
+            Rational value;
+            if (!Rational::from_literal(token_.text, value)) {
+                fail("a number such as 12, 3.5 or 0.125");
+            }
+            token_ = lexer_.next();
+            return Polynomial::constant(ring_, std::move(value));
+        }
+        if (token_.kind == TokenKind::identifier) {
+            const auto var = ring_->variable_index(token_.text);
+            if (!var) {
+                fail("a declared variable");
+            }
+            token_ = lexer_.next();
+            return Polynomial::variable(ring_, *var);
+        }
+        if (is_symbol('(')) {
+            const Token open = token_;
+            token_ = lexer_.next();
+            Polynomial p = sum();
+            if (!is_symbol(')')) {
+                fail("')' to close the '(' at column " + std::to_string(open.column));
+            }
+            token_ = lexer_.next();
+            return p;
+        }
+        fail("a number, a variable or '('");
+    }
+
+    Lexer lexer_;
+    const RingPtr& ring_;
+    Token token_;
+};
+
+std::string_view trim(std::string_view s, std::size_t* leading = nullptr) {
+    std::size_t a = 0, b = s.size();
+    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) {
+        ++a;
+    }
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) {
+        --b;
+    }
+    if (leading) {
+        *leading = a;
+    }
+    return s.substr(a, b - a);
+}
+
+}  // namespace
+
+Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::size_t line,
+                            std::size_t first_column) {
+    return PolynomialParser(text, ring, line, first_column).parse();
+}
+
+std::vector<std::string> parse_name_list(std::string_view text, std::size_t line,
+                                         std::size_t first_column) {
+    std::vector<std::string> names;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        std::size_t lead = 0;
+        const std::string_view name = trim(text.substr(start, comma - start), &lead);
+        const std::size_t column = first_column + start + lead;
+        const bool ok = !name.empty() &&
+                        (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                        std::all_of(name.begin(), name.end(), [](char c) {
+                            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                        });
+        if (!ok) {
+            throw ParseError(line, column, "a variable name (an identifier)",
+                             name.empty() ? std::string("nothing") : "'" + std::string(name) + "'");
+        }
+        if (std::find(names.begin(), names.end(), name) != names.end()) {
+            throw ParseError(line, column, "a name not declared before",
+                             "'" + std::string(name) + "' a second time");
+        }
+        names.emplace_back(name);
+        if (comma == text.size()) {
+            break;
+        }
+        start = comma + 1;
+    }
+    return names;
+}
+
+IdealFile parse_ideal_file(std::string_view text) {
+    IdealFile file;
+    std::vector<std::string> names;
+    bool have_vars = false;
+    std::string order_text = "grevlex";
+    std::size_t order_line = 0, order_column = 0;
+    struct PendingLine {
+        std::string_view text;
+        std::size_t line, column;
+    };
+    std::vector<PendingLine> generator_lines;
+    std::size_t line_number = 0;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        const std::size_t eol = std::min(text.find('\n', pos), text.size());
+        std::string_view raw = text.substr(pos, eol - pos);
+        ++line_number;
+        pos = eol + 1;
+        if (const auto hash = raw.find('#'); hash != std::string_view::npos) {
+            raw = raw.substr(0, hash);
+        }
+        std::size_t lead = 0;
+        const std::string_view content = trim(raw, &lead);
+        if (content.empty()) {
+            if (eol == text.size()) {
+                break;
+            }
+            continue;
+        }
+        const auto colon = content.find(':');
+        if (colon != std::string_view::npos) {
+            const std::string_view key = trim(content.substr(0, colon));
+            const std::size_t value_column = lead + colon + 2;
+            const std::string_view value = raw.substr(lead + colon + 1);
+            if (!generator_lines.empty()) {
+                throw ParseError(line_number, lead + 1, "a generator (headers come first)",
+                                 "'" + std::string(key) + ":'");
+            }
+            if (key == "vars") {
+                if (have_vars) {
+                    throw ParseError(line_number, lead + 1, "one 'vars:' line", "a second one");
+                }
+                names = parse_name_list(value, line_number, value_column);
+                have_vars = true;
+            } else if (key == "order") {
+                order_text = std::string(value);
+                order_line = line_number;
+                order_column = value_column;
+            } else {
+                throw ParseError(line_number, lead + 1, "'vars:', 'order:' or a generator",
+                                 "'" + std::string(key) + ":'");
+            }
+        } else {
+            if (!have_vars) {
+                throw ParseError(line_number, lead + 1, "a 'vars:' line before the generators",
+                                 "'" + std::string(content.substr(0, 20)) + "'");
+            }
+            generator_lines.push_back({raw, line_number, 1});
+        }
+        if (eol == text.size()) {
+            break;
+        }
+    }
+    if (!have_vars) {
+        throw ParseError(line_number == 0 ? 1 : line_number, 1, "a 'vars:' line", "end of input");
+    }
+    MonomialOrder order = order_line == 0
+                              ? MonomialOrder::grevlex(names.size())
+                              : parse_monomial_order(order_text, names, order_line, order_column);
+    file.ring = PolyRing::make(names, std::move(order));
+    for (const auto& g : generator_lines) {
+        Polynomial p = parse_polynomial(g.text, file.ring, g.line, g.column);
+        if (!p.is_zero()) {
+            file.generators.push_back(std::move(p));
+            file.generator_lines.push_back(g.line);
+        }
+    }
+    return file;
+}
+
+}  // namespace locus::algebra

@@ -1,0 +1,96 @@
+#include "cli/command_support.h"
+
+#include <unistd.h>  // for isatty
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "algebra/error.h"
+#include "cli/exit_codes.h"
+
+namespace locus::cli {
+
+std::string read_input(const std::string& path) {
+    std::ostringstream text;
+    if (path == "-") {
+        text << std::cin.rdbuf();
+        return text.str();
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw CommandFailure(exit_input, path + ": cannot open file");
+    }
+    text << in.rdbuf();
+    return text.str();
+}
+
+algebra::IdealFile read_ideal(const std::string& path,
+                              const std::optional<std::string>& order_override) {
+    const std::string text = read_input(path);
+    const std::string name = path == "-" ? "<stdin>" : path;
+    algebra::IdealFile file;
+    try {
+        file = algebra::parse_ideal_file(text);
+    } catch (const ParseError& e) {
+        throw CommandFailure(exit_input, name + ": " + e.what());
+    } catch (const Error& e) {
+        throw CommandFailure(exit_input, name + ": " + e.what());
+    }
+    if (order_override) {
+        try {
+            const auto order =
+                algebra::parse_monomial_order(*order_override, file.ring->variable_names(), 1, 1);
+            const auto ring = file.ring->with_order(order);
+            for (auto& g : file.generators) {
+                g = g.in_ring(ring);
+            }
+            file.ring = ring;
+        } catch (const Error& e) {
+            throw CommandFailure(exit_input, std::string("--order: ") + e.what());
+        }
+    }
+    return file;
+}
+
+std::optional<std::chrono::steady_clock::time_point> deadline_after(double seconds) {
+    if (seconds <= 0) {
+        return std::nullopt;
+    }
+    return std::chrono::steady_clock::now() +
+           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+               std::chrono::duration<double>(seconds));
+}
+
+namespace {
+bool progress_shown = false;
+}
+
+std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const std::string& label) {
+    if (!isatty(STDERR_FILENO)) {
+        return {};
+    }
+    auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+    return [label, last](const algebra::GroebnerProgress& p) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - *last < std::chrono::milliseconds(100)) {
+            return;
+        }
+        *last = now;
+        std::fprintf(stderr, "\r%s: %zu pairs done, %zu left, basis %zu, sugar %u   ",
+                     label.c_str(), p.pairs_done, p.pairs_left, p.basis_size, p.current_sugar);
+        std::fflush(stderr);
+        progress_shown = true;
+    };
+}
+
+void finish_progress() {
+    if (progress_shown) {
+        std::fprintf(stderr, "\r\033[K");
+        std::fflush(stderr);
+        progress_shown = false;
+    }
+}
+
+}  // namespace locus::cli

@@ -1,0 +1,41 @@
+// Helpers shared by the subcommands: reading inputs, progress on a terminal, deadlines.
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "algebra/groebner/buchberger.h"
+#include "algebra/parse.h"
+
+namespace locus::cli {
+
+// A failure already explained to the user; main() prints `what()` and exits with `code`.
+class CommandFailure : public std::runtime_error {
+  public:
+    CommandFailure(int code, const std::string& message)
+        : std::runtime_error(message), code_(code) {}
+    int code() const { return code_; }
+
+  private:
+    int code_;
+};
+
+// The whole of a file, or of standard input for "-". Throws CommandFailure (exit 2).
+std::string read_input(const std::string& path);
+
+// Reads an ideal file; parse errors are prefixed with the file name. `order_override` (the
+// text of --order) replaces the file's order.
+algebra::IdealFile read_ideal(const std::string& path,
+                              const std::optional<std::string>& order_override = std::nullopt);
+
+// A deadline `seconds` from now, or none for seconds <= 0.
+std::optional<std::chrono::steady_clock::time_point> deadline_after(double seconds);
+
+// A progress callback that redraws one line on standard error when it is a terminal (and does
+// nothing otherwise), at most ten times a second; finish_progress() clears the line.
+std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const std::string& label);
+void finish_progress();
+
+}  // namespace locus::cli
