@@ -1,6 +1,7 @@
-// Buchberger's main loop. Selection: the pair with least sugar (ties: least lcm), chosen by a
-// linear scan; the pair set stays small next to the reduction work (a few thousand pairs on
-// cyclic-6), so a heap would not pay for its upkeep under the Gebauer–Möller deletions.
+// Buchberger's main loop. Selection (resolve_selection below): the pair with least key (sugar,
+// lcm degree or nothing) and then least lcm, chosen by a linear scan; the pair set stays small next
+// to the reduction work (a few thousand pairs on cyclic-6), so a heap would not pay for its upkeep
+// under the Gebauer–Möller deletions.
 #include "algebra/groebner/buchberger.h"
 
 #include <algorithm>
@@ -57,8 +58,8 @@ SelectionStrategy resolve_selection(SelectionStrategy requested, const MonomialO
         return requested;
     }
     const auto& first_row = order.matrix_rows().front();
-    const bool degree_first = std::all_of(first_row.begin(), first_row.end(),
-                                          [](std::int64_t v) { return v == 1; });
+    const bool degree_first =
+        std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v == 1; });
     return degree_first ? SelectionStrategy::sugar : SelectionStrategy::normal;
 }
 
@@ -141,7 +142,7 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         pairs[k] = std::move(pairs.back());
         pairs.pop_back();
         ++pairs_done;
-        if (options.progress && pairs_done % 1 == 0) {
+        if (options.progress) {
             options.progress({pairs_done, pairs.size(), basis.size(), pair.sugar});
         }
 

@@ -61,7 +61,7 @@ struct GroebnerOptions {
     std::optional<std::chrono::steady_clock::time_point> deadline;
     // Stop (outcome stopped_size) when the basis would exceed this many elements; 0 = no limit.
     std::size_t max_basis_size = 0;
-    // Called about every 256 S-pairs with the state so far (for progress bars).
+    // Called after every S-pair with the state so far (for progress bars; throttle inside).
     std::function<void(const GroebnerProgress&)> progress;
 };
 

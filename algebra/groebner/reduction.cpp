@@ -51,7 +51,9 @@ long Reducer::find_reducer(const std::uint64_t* m, const std::vector<BasisElemen
         if (!layout_.divides(e.poly.monomial(0, w), m)) {
             continue;
         }
-        if (best < 0 || e.poly.size() < basis[static_cast<std::size_t>(best)].poly.size()) {
+        if (best < 0 ||
+            fmpz_bits(e.poly.coefficients[0].get()) <
+                fmpz_bits(basis[static_cast<std::size_t>(best)].poly.coefficients[0].get())) {
             best = static_cast<long>(k);
         }
     }

@@ -3,8 +3,10 @@
 // One step replaces p by a·p − b·m·g, where lt(m·g) and lt(p) have the same monomial and
 // a = lc(g)/gcd, b = lc(p)/gcd, so no fractions appear; terms already moved to the result are
 // scaled by a as well, so the result stays a multiple of p modulo the ideal. Among the basis
-// elements whose leading monomial divides, the one with fewest terms is used (a cheap and
-// effective heuristic; Singular's "length" selection).
+// elements whose leading monomial divides, the one with the smallest leading coefficient is
+// used (ties: the oldest): every step multiplies p by that coefficient. Choosing the shortest
+// reducer instead let coefficients double with each new element on cyclic-6 (over 2 million
+// bits after 140 pairs, a minute of work); smallest-lc or oldest finish it in about 2 s.
 #pragma once
 
 #include <span>
