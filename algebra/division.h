@@ -26,7 +26,7 @@ Polynomial normal_form(const Polynomial& f, std::span<const Polynomial> basis);
 bool check_division(const Polynomial& f, std::span<const Polynomial> divisors,
                     const DivisionResult& result);
 
-// f / g when g divides f exactly, otherwise std::nullopt is not used: throws InputError.
+// f / g when g divides f exactly; throws InputError when it does not (or g is zero).
 Polynomial exact_quotient(const Polynomial& f, const Polynomial& g);
 
 }  // namespace locus::algebra

@@ -38,6 +38,11 @@ class MonomialLayout {
     void unpack(const std::uint64_t* m, std::span<std::uint32_t> exponents) const;
     std::uint32_t exponent(const std::uint64_t* m, std::size_t var) const;
     std::uint32_t total_degree(const std::uint64_t* m) const;
+    // The first comparison field: the degree under the order's first weight row (total degree
+    // for grlex/grevlex, the weighted degree for weights(..), the degree in the eliminated
+    // block for elim(..), the first variable's exponent for lex). The sugar degree of the
+    // Gröbner code is measured in it.
+    std::uint32_t leading_weight(const std::uint64_t* m) const { return field(m, 0); }
 
     // -1, 0, 1 by the order.
     int compare(const std::uint64_t* a, const std::uint64_t* b) const {

@@ -139,7 +139,8 @@ std::string macaulay2_ring(const PolyRing& ring) {
         mo = "GRevLex";
         break;
     case MonomialOrder::Kind::weighted:
-        mo = "{Weights => {" + join_ints(order.matrix_rows()[0]) + "}, GRevLex}";
+        // GRevLex => w is weighted degree, then reverse lex: Singular's wp and locus's weights.
+        mo = "{GRevLex => {" + join_ints(order.matrix_rows()[0]) + "}}";
         break;
     case MonomialOrder::Kind::elimination:
         mo = "{GRevLex => " + std::to_string(b.block_sizes[0]);
@@ -186,7 +187,11 @@ std::string to_latex(const Polynomial& f) {
             const auto digit = name.find_first_of("0123456789");
             if (digit != std::string::npos && digit > 0 &&
                 name.find_first_not_of("0123456789", digit) == std::string::npos) {
-                s += name.substr(0, digit) + "_{" + name.substr(digit) + "}";
+                std::string stem = name.substr(0, digit);
+                if (stem.size() > 1 && stem.back() == '_') {
+                    stem.pop_back();  // y_2 -> y_{2}, not y__{2}
+                }
+                s += stem + "_{" + name.substr(digit) + "}";
             } else if (name.size() > 1) {
                 s += "\\mathit{" + name + "}";
             } else {
@@ -247,8 +252,8 @@ std::string singular_ring(const PolyRing& ring, std::string_view ring_name) {
         o += ")";
         break;
     case MonomialOrder::Kind::matrix: {
-        // Singular wants the matrix entries row by row; its rows must be non-negative in the
-        // sense of the packed fields, which MonomialOrder already computed.
+        // Singular takes the matrix row by row, negative entries included (checked against
+        // Singular 4.3.1 by scripts/capture-singular-oracle).
         std::vector<std::int64_t> entries;
         for (const auto& row : order.matrix_rows()) {
             entries.insert(entries.end(), row.begin(), row.end());

@@ -43,7 +43,7 @@ int run_demo() {
     std::printf("check: %s (%zu generators and %zu S-pairs reduce to zero)\n",
                 check.ok && algebra::is_reduced(r.basis) ? "ok" : "FAILED",
                 check.generators_checked, check.pairs_checked);
-    return check.ok ? exit_ok : exit_check_failed;
+    return check.ok && algebra::is_reduced(r.basis) ? exit_ok : exit_check_failed;
 }
 
 }  // namespace

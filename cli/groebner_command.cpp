@@ -35,6 +35,12 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
                  s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
 }
 
+std::string seconds_text(double seconds) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g s", seconds);
+    return buffer;
+}
+
 int run_groebner(const GroebnerArgs& args) {
     const algebra::OutputFormat format = [&] {
         try {
@@ -64,7 +70,7 @@ int run_groebner(const GroebnerArgs& args) {
             print_stats(result, *ideal.ring);
         }
         throw CommandFailure(exit_timeout, "timeout: stopped after " +
-                                               std::to_string(args.timeout_seconds) + " s with " +
+                                               seconds_text(args.timeout_seconds) + " with " +
                                                std::to_string(result.basis.size()) +
                                                " basis elements; the basis is not complete");
     }
@@ -101,7 +107,8 @@ void add_groebner_command(CLI::App& app, int& exit_code) {
                     "override the file's order: lex, grlex, grevlex, weights(..), elim(..), "
                     "matrix(..)");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
-    cmd->add_option("--selection", args->selection, "pair selection: auto (default) | sugar | degree | normal");
+    cmd->add_option("--selection", args->selection,
+                    "pair selection: auto (default) | sugar | degree | normal");
     cmd->add_flag("--stats", args->stats, "print statistics to standard error");
     cmd->add_flag("--check", args->check,
                   "verify independently: generators and S-pairs reduce to zero, basis reduced");

@@ -2,8 +2,8 @@
 // "Gröbner Bases", ch. 5) with
 //   - the product and chain criteria installed as Gebauer–Möller (pair_criteria.h),
 //   - normal selection refined by sugar (Giovini, Mora, Niesi, Robbiano, Traverso, "One sugar
-//     cube, please", ISSAC 1991): the pair of least sugar degree, ties by least lcm, on degree
-//     orders; Buchberger's normal strategy (least lcm) on the others (SelectionStrategy),
+//     cube, please", ISSAC 1991): the pair of least sugar degree, ties by least lcm, where
+//     degrees are taken in the order's first weight row (total degree for grevlex),
 //   - fraction-free reduction over Z with primitive parts (reduction.h),
 //   - interreduction to the reduced basis (reduced_basis.cpp): monic, unique for the ideal and
 //     the order.
@@ -27,9 +27,9 @@
 namespace locus::algebra {
 
 enum class SelectionStrategy {
-    automatic,  // sugar for degree orders (grlex, grevlex), normal for the others
-    sugar,      // least sugar degree, ties by least lcm
-    degree,     // least total degree of the lcm, ties by least lcm (Singular's default)
+    automatic,  // currently sugar, for every order (see resolve_selection)
+    sugar,      // least sugar degree (in the order's first weight row), ties by least lcm
+    degree,     // least first-row degree of the lcm, ties by least lcm
     normal,     // least lcm under the order (Buchberger's normal strategy)
 };
 

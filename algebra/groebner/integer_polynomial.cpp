@@ -1,5 +1,7 @@
 #include "algebra/groebner/integer_polynomial.h"
 
+#include <algorithm>
+
 namespace locus::algebra::detail {
 
 IntegerPolynomial to_integer_polynomial(const Polynomial& f) {
@@ -20,7 +22,9 @@ IntegerPolynomial to_integer_polynomial(const Polynomial& f) {
     }
     make_primitive(p);
     if (!p.empty()) {
-        p.sugar = static_cast<std::uint32_t>(f.total_degree());
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            p.sugar = std::max(p.sugar, f.ring()->layout().leading_weight(p.monomial(i, w)));
+        }
         p.leading_mask = f.ring()->layout().divisibility_mask(p.monomials.data());
     }
     return p;

@@ -10,7 +10,7 @@ void gebauer_moller_update(std::vector<BasisElement>& basis, std::vector<Critica
     const std::size_t w = layout.words();
     const IntegerPolynomial& h = basis[new_index].poly;
     const std::uint64_t* lm_h = h.monomial(0, w);
-    const std::uint32_t deg_h = layout.total_degree(lm_h);
+    const std::uint32_t deg_h = layout.leading_weight(lm_h);
 
     // Candidate new pairs (g, h) for every non-redundant g.
     struct Candidate {
@@ -29,9 +29,9 @@ void gebauer_moller_update(std::vector<BasisElement>& basis, std::vector<Critica
         c.pair.second = new_index;
         c.pair.lcm.resize(w);
         layout.lcm(lm_g, lm_h, c.pair.lcm.data());
-        c.pair.lcm_degree = layout.total_degree(c.pair.lcm.data());
+        c.pair.lcm_degree = layout.leading_weight(c.pair.lcm.data());
         const std::uint32_t sugar_g =
-            basis[g].poly.sugar + c.pair.lcm_degree - layout.total_degree(lm_g);
+            basis[g].poly.sugar + c.pair.lcm_degree - layout.leading_weight(lm_g);
         const std::uint32_t sugar_h = h.sugar + c.pair.lcm_degree - deg_h;
         c.pair.sugar = std::max(sugar_g, sugar_h);
         c.coprime = layout.coprime(lm_g, lm_h);

@@ -152,7 +152,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
                 fmpz_mul(c.get(), c.get(), a.get());
             }
         }
-        const std::uint32_t sugar = layout_.total_degree(m.data()) + r.sugar;
+        const std::uint32_t sugar = layout_.leading_weight(m.data()) + r.sugar;
         result.sugar = std::max(result.sugar, sugar);
         combine(p, head + 1, a, b, m.data(), r);
         head = 0;

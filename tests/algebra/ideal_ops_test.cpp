@@ -1,0 +1,111 @@
+// Ideal operations on examples with known answers (CLO ch. 4) and their defining properties.
+#include "algebra/ideal_ops.h"
+
+#include <gtest/gtest.h>
+
+#include "algebra/division.h"
+#include "algebra/parse.h"
+#include "algebra/print.h"
+#include "tests/support/test_data.h"
+
+namespace locus::algebra {
+namespace {
+
+RingPtr xyz() {
+    return PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
+}
+
+std::vector<Polynomial> polys(const RingPtr& r, std::vector<const char*> texts) {
+    std::vector<Polynomial> out;
+    for (const char* t : texts) {
+        out.push_back(parse_polynomial(t, r));
+    }
+    return out;
+}
+
+std::string printed(const std::vector<Polynomial>& basis) {
+    std::string s;
+    for (const auto& p : basis) {
+        s += to_string(p) + ";";
+    }
+    return s;
+}
+
+TEST(IdealOps, MembershipWithCertificate) {
+    const RingPtr r = xyz();
+    const auto gens = polys(r, {"x^2-y", "x*y-z"});
+    const Polynomial f = parse_polynomial("x^3*y - z^2 + y^2*z - y*z", r);
+    const auto inside = parse_polynomial("x^3 - z + (x+y)*(x^2-y)", r);
+    const MembershipCertificate yes = ideal_membership(inside, gens);
+    ASSERT_TRUE(yes.is_member);
+    Polynomial sum(r);
+    for (std::size_t i = 0; i < gens.size(); ++i) {
+        sum += yes.cofactors[i] * gens[i];
+    }
+    EXPECT_EQ(sum, inside);
+    const MembershipCertificate no = ideal_membership(parse_polynomial("x+1", r), gens);
+    EXPECT_FALSE(no.is_member);
+    EXPECT_FALSE(no.remainder.is_zero());
+    (void)f;
+}
+
+TEST(IdealOps, EliminationImplicitizesTheTwistedCubic) {
+    const RingPtr r = PolyRing::make({"t", "x", "y", "z"}, MonomialOrder::grevlex(4));
+    const auto gens = polys(r, {"x-t", "y-t^2", "z-t^3"});
+    const std::size_t t[] = {0};
+    EXPECT_EQ(printed(eliminate(gens, t)), "y^2-x*z;x*y-z;x^2-y;");
+}
+
+TEST(IdealOps, IntersectionQuotientSaturation) {
+    const RingPtr r = xyz();
+    // CLO ch. 4 §3: ⟨x²y⟩ ∩ ⟨xy²⟩ = ⟨x²y²⟩.
+    EXPECT_EQ(printed(ideal_intersection(polys(r, {"x^2*y"}), polys(r, {"x*y^2"}))), "x^2*y^2;");
+    // ⟨x z, y z⟩ : ⟨z⟩ = ⟨x, y⟩.
+    EXPECT_EQ(printed(ideal_quotient(polys(r, {"x*z", "y*z"}), polys(r, {"z"}))), "y;x;");
+    // ⟨x² y⟩ : ⟨x⟩^∞ = ⟨y⟩.
+    EXPECT_EQ(printed(saturation(polys(r, {"x^2*y"}), polys(r, {"x"}))), "y;");
+    // Sum and product.
+    EXPECT_EQ(printed(ideal_sum(polys(r, {"x"}), polys(r, {"y"}))), "y;x;");
+    EXPECT_EQ(printed(ideal_product(polys(r, {"x", "y"}), polys(r, {"z"}))), "y*z;x*z;");
+}
+
+TEST(IdealOps, IntersectionIsContainedInBothAndContainsTheProduct) {
+    for (int seed = 0; seed < test::seed_count(12); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(seed);
+        const RingPtr r = PolyRing::make({"x", "y"}, MonomialOrder::grevlex(2));
+        const std::vector<Polynomial> i = {test::random_polynomial(r, rng, 2, 2, false),
+                                           test::random_polynomial(r, rng, 2, 2, false)};
+        const std::vector<Polynomial> j = {test::random_polynomial(r, rng, 2, 2, false)};
+        const auto meet = ideal_intersection(i, j);
+        EXPECT_TRUE(ideal_contains(i, meet));
+        EXPECT_TRUE(ideal_contains(j, meet));
+        EXPECT_TRUE(ideal_contains(meet, ideal_product(i, j)));
+        EXPECT_TRUE(ideal_equal(ideal_sum(i, j), ideal_sum(j, i)));
+    }
+}
+
+TEST(IdealOps, RadicalMembershipAndDimension) {
+    const RingPtr r = xyz();
+    const auto gens = polys(r, {"x^3", "y^2"});
+    EXPECT_TRUE(radical_membership(parse_polynomial("x+y", r), gens));
+    EXPECT_FALSE(ideal_membership(parse_polynomial("x+y", r), gens).is_member);
+    EXPECT_FALSE(radical_membership(parse_polynomial("z", r), gens));
+
+    const DimensionReport points = zero_dimension_test(polys(r, {"x^2-1", "y^2-4", "z-x*y"}));
+    EXPECT_EQ(points.kind, Dimension::zero_dimensional);
+    EXPECT_EQ(points.quotient_dimension, 4u);
+    EXPECT_EQ(zero_dimension_test(polys(r, {"x^2+y^2-1"})).kind, Dimension::positive);
+    EXPECT_EQ(zero_dimension_test(polys(r, {"x", "x-1"})).kind, Dimension::unit_ideal);
+    // A double point counts twice.
+    EXPECT_EQ(zero_dimension_test(polys(r, {"x^2", "y", "z"})).quotient_dimension, 2u);
+}
+
+TEST(IdealOps, EqualityUnderDifferentGenerators) {
+    const RingPtr r = xyz();
+    EXPECT_TRUE(ideal_equal(polys(r, {"x", "y"}), polys(r, {"x+y", "x-y"})));
+    EXPECT_FALSE(ideal_equal(polys(r, {"x", "y"}), polys(r, {"x+y"})));
+}
+
+}  // namespace
+}  // namespace locus::algebra

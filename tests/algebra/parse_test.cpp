@@ -1,0 +1,113 @@
+// Parser: round trips, exact decimals, and every malformed input at the right line and column.
+#include "algebra/parse.h"
+
+#include <gtest/gtest.h>
+
+#include "algebra/error.h"
+#include "algebra/print.h"
+#include "tests/support/test_data.h"
+
+namespace locus::algebra {
+namespace {
+
+RingPtr xyz() {
+    return PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
+}
+
+TEST(Parse, ExactNumbersAndPrecedence) {
+    const RingPtr r = xyz();
+    EXPECT_EQ(to_string(parse_polynomial("0.1*x", r)), "1/10*x");
+    EXPECT_EQ(to_string(parse_polynomial("3/4 - x/2", r)), "-1/2*x+3/4");
+    EXPECT_EQ(to_string(parse_polynomial("-x^2*y", r)), "-x^2*y");
+    EXPECT_EQ(to_string(parse_polynomial("(x+y)^2", r)), "x^2+2*x*y+y^2");
+    EXPECT_EQ(to_string(parse_polynomial("-(x - 1)^3", r)), "-x^3+3*x^2-3*x+1");
+    EXPECT_EQ(to_string(parse_polynomial("2*x*3*y", r)), "6*x*y");
+    EXPECT_EQ(to_string(parse_polynomial("x - x", r)), "0");
+    EXPECT_EQ(to_string(parse_polynomial("1.25 + .5", r)), "7/4");
+}
+
+TEST(Parse, PrintParseRoundTrip) {
+    for (int seed = 0; seed < test::seed_count(200); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(seed);
+        const RingPtr r = xyz();
+        const Polynomial f = test::random_polynomial(r, rng, 1 + seed % 8, 5);
+        EXPECT_EQ(parse_polynomial(to_string(f), r), f);
+    }
+}
+
+struct BadInput {
+    const char* text;
+    std::size_t line, column;
+    const char* expected_fragment;
+};
+
+TEST(Parse, MalformedInputsReportLineAndColumn) {
+    const RingPtr r = xyz();
+    const BadInput cases[] = {
+        {"(x+y", 1, 5, "')' to close"},
+        {"x+y)", 1, 4, "unbalanced ')'"},
+        {"x^-1", 1, 3, "non-negative integer exponent"},
+        {"x^1.5", 1, 3, "non-negative integer exponent"},
+        {"x + q", 1, 5, "a declared variable"},
+        {"x / y", 1, 5, "a constant divisor"},
+        {"x / (1-1)", 1, 5, "a non-zero divisor"},
+        {"", 1, 1, "a polynomial"},
+        {"x^40000", 1, 3, "an exponent of at most 32767"},
+        {"x^20000*x^20000", 1, 8, "exponents of at most 32767"},
+        {"2 x", 1, 3, "an operator"},
+        {"x +\n  * y", 2, 3, "a number, a variable or '('"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(std::string("input: ") + c.text);
+        try {
+            parse_polynomial(c.text, r);
+            ADD_FAILURE() << "no error";
+        } catch (const ParseError& e) {
+            EXPECT_EQ(e.line(), c.line);
+            EXPECT_EQ(e.column(), c.column);
+            EXPECT_NE(e.expected().find(c.expected_fragment), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(Parse, IdealFile) {
+    const IdealFile f = parse_ideal_file(
+        "# comment\nvars: x, y ,z\norder: elim(z)  # block order\n\nx^2 - y\r\nz*x-1 # tail\n");
+    EXPECT_EQ(f.ring->variable_names(), (std::vector<std::string>{"x", "y", "z"}));
+    EXPECT_EQ(f.ring->order().kind(), MonomialOrder::Kind::elimination);
+    ASSERT_EQ(f.generators.size(), 2u);
+    EXPECT_EQ(f.generator_lines, (std::vector<std::size_t>{5, 6}));
+    EXPECT_EQ(to_string(f.generators[1]), "x*z-1");
+    // Default order is grevlex.
+    EXPECT_EQ(parse_ideal_file("vars: a\na").ring->order().kind(), MonomialOrder::Kind::grevlex);
+}
+
+TEST(Parse, MalformedIdealFiles) {
+    const BadInput cases[] = {
+        {"", 1, 1, "a 'vars:' line"},
+        {"x+1\n", 1, 1, "a 'vars:' line before the generators"},
+        {"vars: x,,y\n", 1, 9, "a variable name"},
+        {"vars: x,y,x\n", 1, 11, "a name not declared before"},
+        {"vars: x,y\norder: revlex\n", 2, 8, "an order"},
+        {"vars: x,y\norder: elim(q)\n", 2, 13, "a declared variable"},
+        {"vars: x,y\nx+y\nvars: z\n", 3, 1, "headers come first"},
+        {"vars: x,y\ncolour: red\n", 2, 1, "'vars:', 'order:' or a generator"},
+        {"vars: x,y\nx^2+y\n  x*(y+1\n", 3, 9, "')' to close"},
+        {"vars: x,y\nx^2+u\n", 2, 5, "a declared variable"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(std::string("input: ") + c.text);
+        try {
+            parse_ideal_file(c.text);
+            ADD_FAILURE() << "no error";
+        } catch (const ParseError& e) {
+            EXPECT_EQ(e.line(), c.line);
+            EXPECT_EQ(e.column(), c.column);
+            EXPECT_NE(e.expected().find(c.expected_fragment), std::string::npos) << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace locus::algebra

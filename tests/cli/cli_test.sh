@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# End-to-end checks of the locus executable: outputs, error messages and exit codes.
+# Usage: tests/cli/cli_test.sh PATH/TO/locus   (run from the source root; ctest does this)
+set -uo pipefail
+locus="$1"
+failures=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# expect NAME EXPECTED_EXIT PATTERN_IN_OUTPUT -- COMMAND...
+expect() {
+    local name="$1" code="$2" pattern="$3"
+    shift 4
+    local out
+    out=$("$@" 2>&1)
+    local got=$?
+    if [[ $got -ne $code ]]; then
+        echo "FAIL $name: exit $got, expected $code"; echo "$out" | head -5; failures=$((failures + 1))
+    elif [[ -n "$pattern" ]] && ! grep -qF -- "$pattern" <<<"$out"; then
+        echo "FAIL $name: output lacks '$pattern'"; echo "$out" | head -5; failures=$((failures + 1))
+    else
+        echo "ok   $name"
+    fi
+}
+
+known=tests/data/known
+expect "groebner prints the expected basis" 0 "" -- \
+    bash -c "\"$locus\" groebner $known/cyclic4_lex.ideal | diff - $known/cyclic4_lex.expected"
+expect "groebner reads standard input" 0 "" -- \
+    bash -c "\"$locus\" groebner - < $known/katsura4_grevlex.ideal | diff - $known/katsura4_grevlex.expected"
+expect "check verifies" 0 "check: ok" -- "$locus" groebner $known/cyclic4_grevlex.ideal --check
+expect "stats go to stderr" 0 "reductions to zero" -- "$locus" groebner $known/cyclic4_grevlex.ideal --stats
+expect "order override" 0 "" -- \
+    bash -c "\"$locus\" groebner $known/cyclic4_grevlex.ideal --order lex | diff - $known/cyclic4_lex.expected"
+expect "singular format" 0 "ring r = 0, (x0,x1,x2,x3), dp;" -- \
+    "$locus" groebner $known/cyclic4_grevlex.ideal --format singular
+
+printf 'vars: x,y\nx^2+y\n  x*(y+1\n' > "$tmp/unbalanced.ideal"
+expect "unbalanced parenthesis: line and column" 2 "line 3, column 9: expected ')' to close" -- \
+    "$locus" groebner "$tmp/unbalanced.ideal"
+printf 'vars: x,y\nx^2+u\n' > "$tmp/undeclared.ideal"
+expect "undeclared variable" 2 "line 2, column 5: expected a declared variable, found 'u'" -- \
+    "$locus" groebner "$tmp/undeclared.ideal"
+printf 'vars: x,y\norder: revlex\nx\n' > "$tmp/order.ideal"
+expect "unknown order" 2 "line 2, column 8: expected an order" -- "$locus" groebner "$tmp/order.ideal"
+printf 'vars: x,y\nx^-1\n' > "$tmp/negative.ideal"
+expect "negative exponent" 2 "line 2, column 3: expected a non-negative integer exponent" -- \
+    "$locus" groebner "$tmp/negative.ideal"
+: > "$tmp/empty.ideal"
+expect "empty file" 2 "line 1, column 1: expected a 'vars:' line" -- "$locus" groebner "$tmp/empty.ideal"
+expect "missing file" 2 "cannot open" -- "$locus" groebner "$tmp/nothing.ideal"
+expect "bad --order" 2 "--order" -- "$locus" groebner $known/cyclic4_grevlex.ideal --order 'weights(1)'
+expect "bad --format" 2 "expected normalized, singular, macaulay2 or latex" -- \
+    "$locus" groebner $known/cyclic4_grevlex.ideal --format maple
+expect "timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/cyclic6.ideal --timeout 0.05
+
+printf 'vars: x,y,z\nx^2-y\nx*y-z\n' > "$tmp/twisted.ideal"
+expect "member with cofactors" 0 "cofactor 2:" -- "$locus" ideal member "$tmp/twisted.ideal" "x^3-z"
+expect "not a member exits 1" 1 "remainder:" -- "$locus" ideal member "$tmp/twisted.ideal" "x+1"
+expect "eliminate" 0 "y^3-z^2" -- "$locus" ideal eliminate "$tmp/twisted.ideal" x
+expect "dimension" 0 "positive-dimensional" -- "$locus" ideal dimension "$tmp/twisted.ideal"
+printf 'vars: x,y,z\nx\n' > "$tmp/x.ideal"
+expect "contains: no" 1 "no" -- "$locus" ideal contains "$tmp/twisted.ideal" "$tmp/x.ideal"
+expect "radical membership" 0 "yes" -- "$locus" ideal radical-member "$tmp/twisted.ideal" "y^3-z^2"
+expect "demo runs" 0 "check: ok" -- "$locus" demo
+
+echo "$((22 - failures)) passed, $failures failed"
+[[ $failures -eq 0 ]]
