@@ -46,16 +46,38 @@ std::size_t select_pair(const std::vector<CriticalPair>& pairs, SelectionStrateg
     return best;
 }
 
-// `automatic` is sugar, with the sugar degree measured by the order's first weight row
-// (MonomialLayout::leading_weight): total degree for degree orders, the eliminated block's
-// degree for elim(..), the first variable's exponent for lex. Measured by total degree instead,
-// sugar (and least-lcm-degree) selection walked into long chains of high-degree elements with
-// huge coefficients on lex and block orders: a random 3-variable lex ideal (tests/data/oracle
-// case 1) took over a minute, and a 4-variable elim(x,z) ideal (groebner_test seed 5) did not
-// finish, where Singular needs milliseconds; with the first-row weight both take under 0.2 s.
-// The normal strategy is kept as an option: it is fast on the oracle set but hangs on the latter.
-SelectionStrategy resolve_selection(SelectionStrategy requested, const MonomialOrder&) {
-    return requested == SelectionStrategy::automatic ? SelectionStrategy::sugar : requested;
+struct ResolvedSelection {
+    SelectionStrategy strategy;
+    bool true_degree_sugar = false;  // a new element's sugar is its own degree
+};
+
+// What `automatic` means, per order kind, from measurements (docs/performance.md); degrees are
+// always taken in the order's first weight row (MonomialLayout::leading_weight), which is the
+// total degree for grevlex and grlex:
+//  - degree orders (first row all positive): sugar, and a new element's sugar is its own
+//    degree rather than the phantom degree it picked up from reducers. cyclic-6 takes 0.9 s
+//    this way and 2.3 s with phantom sugar.
+//  - lex: Buchberger's normal strategy. katsura-5 in lex takes 0.4 s this way, 347 s with
+//    phantom sugar, and does not finish in a minute with true-degree sugar (the first row of
+//    lex only sees the first variable).
+//  - block and other matrix orders: phantom sugar in the first-row degree. A random elim(x,z)
+//    ideal (groebner_test seed 5) takes 0.2 s this way and does not finish in a minute with the
+//    normal strategy or with true-degree sugar; measured in total degree instead, sugar walked
+//    into endless chains on lex and matrix oracle cases.
+ResolvedSelection resolve_selection(SelectionStrategy requested, const MonomialOrder& order) {
+    if (requested != SelectionStrategy::automatic) {
+        return {requested, false};
+    }
+    const auto& first_row = order.matrix_rows().front();
+    const bool degree_order =
+        std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
+    if (degree_order) {
+        return {SelectionStrategy::sugar, true};
+    }
+    if (order.kind() == MonomialOrder::Kind::lex) {
+        return {SelectionStrategy::normal, false};
+    }
+    return {SelectionStrategy::sugar, false};
 }
 
 std::vector<Polynomial> unit_basis(const RingPtr& ring) {
@@ -121,7 +143,7 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         }
     }
 
-    const SelectionStrategy strategy = resolve_selection(options.selection, ring->order());
+    const ResolvedSelection selection = resolve_selection(options.selection, ring->order());
     std::size_t pairs_done = 0;
     while (!pairs.empty() && !unit) {
         if (options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
@@ -132,7 +154,7 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
             result.outcome = GroebnerOutcome::stopped_size;
             break;
         }
-        const std::size_t k = select_pair(pairs, strategy, layout);
+        const std::size_t k = select_pair(pairs, selection.strategy, layout);
         CriticalPair pair = std::move(pairs[k]);
         pairs[k] = std::move(pairs.back());
         pairs.pop_back();
@@ -148,6 +170,13 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         if (h.empty()) {
             ++result.stats.zero_reductions;
             continue;
+        }
+        if (selection.true_degree_sugar) {
+            // Drop the phantom degree of the reducers h met: its sugar is its own degree.
+            h.sugar = 0;
+            for (std::size_t i = 0; i < h.size(); ++i) {
+                h.sugar = std::max(h.sugar, layout.leading_weight(h.monomial(i, w)));
+            }
         }
         add_to_basis(std::move(h));
     }

@@ -27,7 +27,7 @@
 namespace locus::algebra {
 
 enum class SelectionStrategy {
-    automatic,  // currently sugar, for every order (see resolve_selection)
+    automatic,  // per order kind, from measurements (see resolve_selection in buchberger.cpp)
     sugar,      // least sugar degree (in the order's first weight row), ties by least lcm
     degree,     // least first-row degree of the lcm, ties by least lcm
     normal,     // least lcm under the order (Buchberger's normal strategy)
