@@ -42,6 +42,20 @@ struct BadInput {
     const char* expected_fragment;
 };
 
+// Runs `parse` and checks that it throws a ParseError at the case's position and wording.
+template <class Parse>
+void expect_parse_error(const BadInput& c, Parse parse) {
+    SCOPED_TRACE(std::string("input: ") + c.text);
+    try {
+        parse();
+        ADD_FAILURE() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), c.line);
+        EXPECT_EQ(e.column(), c.column);
+        EXPECT_NE(e.expected().find(c.expected_fragment), std::string::npos) << e.what();
+    }
+}
+
 TEST(Parse, MalformedInputsReportLineAndColumn) {
     const RingPtr r = xyz();
     const BadInput cases[] = {
@@ -59,15 +73,7 @@ TEST(Parse, MalformedInputsReportLineAndColumn) {
         {"x +\n  * y", 2, 3, "a number, a variable or '('"},
     };
     for (const auto& c : cases) {
-        SCOPED_TRACE(std::string("input: ") + c.text);
-        try {
-            parse_polynomial(c.text, r);
-            ADD_FAILURE() << "no error";
-        } catch (const ParseError& e) {
-            EXPECT_EQ(e.line(), c.line);
-            EXPECT_EQ(e.column(), c.column);
-            EXPECT_NE(e.expected().find(c.expected_fragment), std::string::npos) << e.what();
-        }
+        expect_parse_error(c, [&] { parse_polynomial(c.text, r); });
     }
 }
 
@@ -97,15 +103,7 @@ TEST(Parse, MalformedIdealFiles) {
         {"vars: x,y\nx^2+u\n", 2, 5, "a declared variable"},
     };
     for (const auto& c : cases) {
-        SCOPED_TRACE(std::string("input: ") + c.text);
-        try {
-            parse_ideal_file(c.text);
-            ADD_FAILURE() << "no error";
-        } catch (const ParseError& e) {
-            EXPECT_EQ(e.line(), c.line);
-            EXPECT_EQ(e.column(), c.column);
-            EXPECT_NE(e.expected().find(c.expected_fragment), std::string::npos) << e.what();
-        }
+        expect_parse_error(c, [&] { parse_ideal_file(c.text); });
     }
 }
 
