@@ -79,22 +79,47 @@ class Lexer {
     std::size_t line_, column_;
 };
 
+// Division in the two value types: polynomials only by non-zero constants, rational functions
+// by anything non-zero.
+Polynomial divide(const Polynomial& p, const Polynomial& q, const Token& divisor_start) {
+    if (!q.is_constant()) {
+        throw ParseError(divisor_start.line, divisor_start.column,
+                         "a constant divisor (division only by numbers)", describe(divisor_start));
+    }
+    if (q.is_zero()) {
+        throw ParseError(divisor_start.line, divisor_start.column, "a non-zero divisor",
+                         describe(divisor_start));
+    }
+    Rational inverse;
+    fmpq_inv(inverse.get(), q.leading_coefficient().get());
+    return p * inverse;
+}
+
+RationalFunction divide(const RationalFunction& p, const RationalFunction& q,
+                        const Token& divisor_start) {
+    if (q.is_zero()) {
+        throw ParseError(divisor_start.line, divisor_start.column, "a non-zero divisor",
+                         describe(divisor_start) + " (the divisor is identically zero)");
+    }
+    return p / q;
+}
+
 // Recursive descent over:  sum := product (('+'|'-') product)*
 //   product := unary (('*'|'/') unary)*   unary := ('+'|'-') unary | power
 //   power := atom ('^' integer)?          atom := number | variable | '(' sum ')'
-class PolynomialParser {
+template <class Value>
+class InfixParser {
   public:
-    PolynomialParser(std::string_view text, const RingPtr& ring, std::size_t line,
-                     std::size_t column)
+    InfixParser(std::string_view text, const RingPtr& ring, std::size_t line, std::size_t column)
         : lexer_(text, line, column), ring_(ring) {
         token_ = lexer_.next();
     }
 
-    Polynomial parse() {
+    Value parse() {
         if (token_.kind == TokenKind::end) {
             fail("a polynomial");
         }
-        Polynomial p = sum();
+        Value p = sum();
         if (token_.kind != TokenKind::end) {
             fail(token_.text == ")" ? "end of input (unbalanced ')')"
                                     : "an operator (+ - * / ^) or end of input");
@@ -109,7 +134,7 @@ class PolynomialParser {
     bool is_symbol(char c) const { return token_.kind == TokenKind::symbol && token_.text[0] == c; }
     // Runs an arithmetic step, reporting exponent overflow at the operator.
     template <class F>
-    Polynomial guarded(const Token& op, F&& step) {
+    Value guarded(const Token& op, F&& step) {
         try {
             return step();
         } catch (const ExponentOverflow&) {
@@ -120,45 +145,34 @@ class PolynomialParser {
         }
     }
 
-    Polynomial sum() {
-        Polynomial p = product();
+    Value sum() {
+        Value p = product();
         while (is_symbol('+') || is_symbol('-')) {
             const bool minus = is_symbol('-');
             token_ = lexer_.next();
-            Polynomial q = product();
+            Value q = product();
             p = minus ? p - q : p + q;
         }
         return p;
     }
 
-    Polynomial product() {
-        Polynomial p = unary();
+    Value product() {
+        Value p = unary();
         while (is_symbol('*') || is_symbol('/')) {
             const Token op = token_;
             token_ = lexer_.next();
             const Token divisor_start = token_;
-            Polynomial q = unary();
+            Value q = unary();
             if (op.text == "*") {
                 p = guarded(op, [&] { return p * q; });
             } else {
-                if (!q.is_constant()) {
-                    throw ParseError(divisor_start.line, divisor_start.column,
-                                     "a constant divisor (division only by numbers)",
-                                     describe(divisor_start));
-                }
-                if (q.is_zero()) {
-                    throw ParseError(divisor_start.line, divisor_start.column, "a non-zero divisor",
-                                     describe(divisor_start));
-                }
-                Rational inverse;
-                fmpq_inv(inverse.get(), q.leading_coefficient().get());
-                p *= inverse;
+                p = divide(p, q, divisor_start);
             }
         }
         return p;
     }
 
-    Polynomial unary() {
+    Value unary() {
         if (is_symbol('-')) {
             token_ = lexer_.next();
             return -unary();
@@ -170,8 +184,8 @@ class PolynomialParser {
         return power();
     }
 
-    Polynomial power() {
-        Polynomial base = atom();
+    Value power() {
+        Value base = atom();
         if (!is_symbol('^')) {
             return base;
         }
@@ -201,14 +215,14 @@ class PolynomialParser {
         }
     }
 
-    Polynomial atom() {
+    Value atom() {
         if (token_.kind == TokenKind::number) {
             Rational value;
             if (!Rational::from_literal(token_.text, value)) {
                 fail("a number such as 12, 3.5 or 0.125");
             }
             token_ = lexer_.next();
-            return Polynomial::constant(ring_, std::move(value));
+            return Value::constant(ring_, std::move(value));
         }
         if (token_.kind == TokenKind::identifier) {
             const auto var = ring_->variable_index(token_.text);
@@ -216,12 +230,12 @@ class PolynomialParser {
                 fail("a declared variable");
             }
             token_ = lexer_.next();
-            return Polynomial::variable(ring_, *var);
+            return Value::variable(ring_, *var);
         }
         if (is_symbol('(')) {
             const Token open = token_;
             token_ = lexer_.next();
-            Polynomial p = sum();
+            Value p = sum();
             if (!is_symbol(')')) {
                 fail("')' to close the '(' at column " + std::to_string(open.column));
             }
@@ -254,7 +268,12 @@ std::string_view trim(std::string_view s, std::size_t* leading = nullptr) {
 
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::size_t line,
                             std::size_t first_column) {
-    return PolynomialParser(text, ring, line, first_column).parse();
+    return InfixParser<Polynomial>(text, ring, line, first_column).parse();
+}
+
+RationalFunction parse_rational_function(std::string_view text, const RingPtr& ring,
+                                         std::size_t line, std::size_t first_column) {
+    return InfixParser<RationalFunction>(text, ring, line, first_column).parse();
 }
 
 std::vector<std::string> parse_name_list(std::string_view text, std::size_t line,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algebra/polynomial.h"
+#include "algebra/rational_function.h"
 
 namespace locus::algebra {
 
@@ -17,6 +18,12 @@ namespace locus::algebra {
 // first_column), so that a caller parsing a fragment of a file reports file positions.
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::size_t line = 1,
                             std::size_t first_column = 1);
+
+// The same grammar, but `/` divides by any non-zero expression: a quotient of polynomials such
+// as `(1-t^2)/(1+t^2)`, returned in lowest terms. A divisor that is identically zero is a
+// ParseError at the divisor.
+RationalFunction parse_rational_function(std::string_view text, const RingPtr& ring,
+                                         std::size_t line = 1, std::size_t first_column = 1);
 
 // The contents of an ideal file: its ring (variables and order) and its generators in file
 // order (zero generators are dropped), with the line each generator came from.

@@ -8,6 +8,7 @@ namespace locus::cli {
 
 void add_groebner_command(CLI::App& app, int& exit_code);
 void add_ideal_command(CLI::App& app, int& exit_code);
+void add_implicitize_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_demo_command(CLI::App& app, int& exit_code);
 

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     int exit_code = exit_ok;
     add_groebner_command(app, exit_code);
     add_ideal_command(app, exit_code);
+    add_implicitize_command(app, exit_code);
     add_bench_command(app, exit_code);
     add_demo_command(app, exit_code);
     try {

@@ -64,5 +64,12 @@ expect "contains: no" 1 "no" -- "$locus" ideal contains "$tmp/twisted.ideal" "$t
 expect "radical membership" 0 "yes" -- "$locus" ideal radical-member "$tmp/twisted.ideal" "y^3-z^2"
 expect "demo runs" 0 "check: ok" -- "$locus" demo
 
-echo "$((22 - failures)) passed, $failures failed"
+expect "implicitize inline" 0 "verified" -- "$locus" implicitize -p s,t "x = s*t" "y = s" "z = t^2"
+printf 'params: t\nx = (1-t^2)/(1+t^2)\ny = 2*t/(1+t^2)\n' > "$tmp/circle.param"
+expect "implicitize file" 0 "" -- bash -c "\"$locus\" implicitize $tmp/circle.param 2>/dev/null | grep -qx 'x^2+y^2-1'"
+expect "implicitize not principal" 0 "not principal" -- "$locus" implicitize -p t "x=t" "y=t^2" "z=t^3"
+printf 'params: t\nx = t\nx = t^2\n' > "$tmp/twice.param"
+expect "implicitize bad input" 2 "line 3, column 1" -- "$locus" implicitize "$tmp/twice.param"
+
+echo "$((26 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

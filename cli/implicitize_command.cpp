@@ -1,0 +1,108 @@
+// `locus implicitize FILE` or `locus implicitize -p s,t "x = s*t" "y = s" "z = t^2"`: the
+// implicit equation of a parametrization, verified by substitution.
+#include <cstdio>
+#include <iostream>
+
+#include "algebra/error.h"
+#include "algebra/flint_convert.h"
+#include "algebra/print.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "implicit/implicitize.h"
+
+namespace locus::cli {
+namespace {
+
+struct ImplicitizeArgs {
+    std::vector<std::string> inputs;  // a file, or with --params the assignments
+    std::string params;
+    std::string format = "normalized";
+    std::string method = "auto";
+    double timeout_seconds = 0;
+};
+
+int run_implicitize(const ImplicitizeArgs& args) {
+    const algebra::OutputFormat format = algebra::parse_output_format(args.format);
+    if (args.method != "auto" && args.method != "groebner") {
+        throw CommandFailure(exit_input, "--method " + args.method +
+                                             ": only groebner (and auto) are available so far");
+    }
+    std::string text, source;
+    if (!args.params.empty()) {
+        text = "params: " + args.params + "\n";
+        for (const auto& a : args.inputs) {
+            text += a + "\n";
+        }
+        source = "<arguments>";
+    } else {
+        if (args.inputs.size() != 1) {
+            throw CommandFailure(exit_input,
+                                 "implicitize: give one parametrization file, or -p PARAMS and "
+                                 "the assignments");
+        }
+        text = read_input(args.inputs[0]);
+        source = args.inputs[0] == "-" ? "<stdin>" : args.inputs[0];
+    }
+    implicit::Parametrization map;
+    try {
+        map = implicit::parse_parametrization(text);
+    } catch (const Error& e) {
+        throw CommandFailure(exit_input, source + ": " + e.what());
+    }
+    algebra::GroebnerOptions options;
+    options.deadline = deadline_after(args.timeout_seconds);
+    options.progress = terminal_progress("implicitize");
+    const implicit::ImplicitResult r = implicit::implicitize(map, options);
+    finish_progress();
+    std::fprintf(stderr, "method: groebner (elimination)\n");
+    const std::size_t k = map.parameter_ring->num_vars();
+    if (r.equation) {
+        std::cout << algebra::format_polynomials(std::vector{*r.equation}, *r.ring, format);
+        std::cout.flush();
+        if (!implicit::vanishes_on(*r.equation, map)) {
+            throw CommandFailure(exit_check_failed,
+                                 "verification FAILED: the equation does not vanish on the "
+                                 "parametrization");
+        }
+        const algebra::Factorization fac = algebra::factor(*r.equation);
+        const bool irreducible = fac.factors.size() == 1 && fac.factors[0].second == 1;
+        std::fprintf(stderr, "verified: vanishes identically on the parametrization\n");
+        std::fprintf(stderr, "degree %ld, %zu terms, %s\n", r.equation->total_degree(),
+                     r.equation->num_terms(), irreducible ? "irreducible" : "reducible");
+        return exit_ok;
+    }
+    std::cout << algebra::format_polynomials(r.generators, *r.ring, format);
+    std::cout.flush();
+    for (const auto& g : r.generators) {
+        if (!implicit::vanishes_on(g, map)) {
+            throw CommandFailure(exit_check_failed,
+                                 "verification FAILED for " + algebra::to_string(g));
+        }
+    }
+    std::fprintf(stderr,
+                 "not principal: %s\nverified: all %zu generators vanish on the "
+                 "parametrization\n",
+                 implicit::describe_image(r.image, k, map.coordinates.size()).c_str(),
+                 r.generators.size());
+    return exit_ok;
+}
+
+}  // namespace
+
+void add_implicitize_command(CLI::App& app, int& exit_code) {
+    auto args = std::make_shared<ImplicitizeArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "implicitize", "Implicit equation of a parametrization, verified by substitution");
+    cmd->add_option("inputs", args->inputs,
+                    "a .param file (- for standard input), or with -p the assignments "
+                    "\"x = ...\"")
+        ->required();
+    cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
+    cmd->add_option("--method", args->method, "auto | groebner");
+    cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
+    cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
+    cmd->callback([args, &exit_code] { exit_code = run_implicitize(*args); });
+}
+
+}  // namespace locus::cli

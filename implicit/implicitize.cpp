@@ -1,0 +1,143 @@
+#include "implicit/implicitize.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include "algebra/error.h"
+#include "algebra/ideal_ops.h"
+
+namespace locus::implicit {
+
+using algebra::MonomialOrder;
+using algebra::Polynomial;
+using algebra::PolyRing;
+using algebra::Rational;
+using algebra::RingPtr;
+
+ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOptions& options) {
+    const RingPtr& params = map.parameter_ring;
+    const std::size_t k = params->num_vars();
+    const std::size_t n = map.coordinates.size();
+    bool rational = false;
+    for (const auto& c : map.components) {
+        rational = rational || !c.is_polynomial();
+    }
+    // Big ring: parameters, then w (for rational maps), then the coordinates.
+    std::vector<std::string> names = params->variable_names();
+    std::string w_name = "w";
+    while (std::find(names.begin(), names.end(), w_name) != names.end() ||
+           std::find(map.coordinates.begin(), map.coordinates.end(), w_name) !=
+               map.coordinates.end()) {
+        w_name += "_";
+    }
+    if (rational) {
+        names.push_back(w_name);
+    }
+    const std::size_t first_coordinate = names.size();
+    for (const auto& c : map.coordinates) {
+        if (std::find(names.begin(), names.end(), c) != names.end()) {
+            throw InputError("'" + c + "'", "a parameter may not be named like a coordinate");
+        }
+        names.push_back(c);
+    }
+    const RingPtr big = PolyRing::make(names, MonomialOrder::grevlex(names.size()));
+    std::vector<std::size_t> lift(k);
+    std::iota(lift.begin(), lift.end(), 0);
+    std::vector<Polynomial> generators;
+    Polynomial denominators = Polynomial::constant(big, Rational(1));
+    for (std::size_t i = 0; i < n; ++i) {
+        const Polynomial p = map.components[i].numerator().in_ring(big, lift);
+        const Polynomial q = map.components[i].denominator().in_ring(big, lift);
+        generators.push_back(q * Polynomial::variable(big, first_coordinate + i) - p);
+        denominators *= q;
+    }
+    if (rational) {
+        generators.push_back(Polynomial::constant(big, Rational(1)) -
+                             Polynomial::variable(big, k) * denominators);
+    }
+    std::vector<std::size_t> eliminated(first_coordinate);
+    std::iota(eliminated.begin(), eliminated.end(), 0);
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<Polynomial> kept = algebra::eliminate(generators, eliminated, options);
+
+    ImplicitResult result;
+    result.ring = PolyRing::make(map.coordinates, MonomialOrder::grevlex(n));
+    std::vector<std::size_t> down(names.size(), 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        down[first_coordinate + i] = i;
+    }
+    std::vector<Polynomial> in_coordinates;
+    for (const auto& g : kept) {
+        in_coordinates.push_back(g.in_ring(result.ring, down));
+    }
+    result.generators =
+        in_coordinates.empty() ? in_coordinates : algebra::groebner(in_coordinates).basis;
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (result.generators.size() == 1) {
+        result.equation = result.generators[0].primitive_part();
+        result.image = ImageKind::hypersurface;
+    } else if (result.generators.empty()) {
+        result.image = ImageKind::dense;
+    } else {
+        const auto dim = algebra::zero_dimension_test(result.generators);
+        result.image = dim.kind == algebra::Dimension::zero_dimensional
+                           ? ImageKind::point
+                           : ImageKind::lower_dimensional;
+    }
+    return result;
+}
+
+bool vanishes_on(const Polynomial& f, const Parametrization& map) {
+    const RingPtr& params = map.parameter_ring;
+    const std::size_t n = map.coordinates.size();
+    std::vector<long> degree(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        degree[i] = std::max<long>(0, f.degree(i));
+    }
+    // Powers of numerators and denominators, cached.
+    std::vector<std::vector<Polynomial>> num_pow(n), den_pow(n);
+    auto power = [&](std::vector<Polynomial>& cache, const Polynomial& base, long e) {
+        if (cache.empty()) {
+            cache.push_back(Polynomial::constant(params, Rational(1)));
+        }
+        while (static_cast<long>(cache.size()) <= e) {
+            cache.push_back(cache.back() * base);
+        }
+        return cache[static_cast<std::size_t>(e)];
+    };
+    Polynomial total(params);
+    for (std::size_t t = 0; t < f.num_terms(); ++t) {
+        const auto e = f.exponents(t);
+        Polynomial term = Polynomial::constant(params, f.coefficient(t));
+        for (std::size_t i = 0; i < n; ++i) {
+            term *= power(num_pow[i], map.components[i].numerator(), e[i]);
+            term *= power(den_pow[i], map.components[i].denominator(), degree[i] - e[i]);
+        }
+        total += term;
+    }
+    return total.is_zero();
+}
+
+std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t num_coordinates) {
+    switch (kind) {
+    case ImageKind::hypersurface:
+        return num_coordinates == 2 ? "the image is a plane curve" : "the image is a surface";
+    case ImageKind::point:
+        return "the map is constant: its image is a point, cut out by one linear equation per "
+               "coordinate, so there is no single implicit equation";
+    case ImageKind::lower_dimensional:
+        return num_params == 1 && num_coordinates == 3
+                   ? "the image is a curve in space: a curve needs at least two equations, so "
+                     "the elimination ideal is not principal; all its generators are printed"
+                   : "the image has lower dimension than the parameter count suggests (the map "
+                     "is degenerate): the elimination ideal is not principal; all its "
+                     "generators are printed";
+    case ImageKind::dense:
+        return "no polynomial vanishes on the image: it fills the whole space";
+    }
+    return "";
+}
+
+}  // namespace locus::implicit

@@ -1,0 +1,48 @@
+// Implicitization by elimination (Cox–Little–O'Shea, IVA ch. 3 §3, Theorems 1 and 2): for
+// xᵢ = pᵢ/qᵢ, the smallest variety containing the image is V(I ∩ Q[x]) with
+// I = ⟨q₁x₁ − p₁, …, qₙxₙ − pₙ, 1 − q₁⋯qₙ·w⟩ (w only when some qᵢ is not constant), computed
+// with a Gröbner basis in an elimination order for the parameters and w.
+//
+// If the elimination ideal is principal its generator is the implicit equation, printed as a
+// primitive integer polynomial with positive leading coefficient under grevlex x > y > z. If it
+// is not (space curves, degenerate maps), all generators are returned and `image` says what
+// the image is.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algebra/groebner/buchberger.h"
+#include "implicit/parametrization.h"
+
+namespace locus::implicit {
+
+enum class ImageKind {
+    hypersurface,       // principal: one implicit equation
+    point,              // the map is constant
+    lower_dimensional,  // a curve in space, or a surface map whose image is a curve
+    dense,              // no polynomial vanishes on the image (more parameters than dimensions)
+};
+
+struct ImplicitResult {
+    algebra::RingPtr ring;                        // Q[x, y(, z)], grevlex
+    std::vector<algebra::Polynomial> generators;  // reduced basis of the elimination ideal
+    std::optional<algebra::Polynomial> equation;  // when principal: primitive, lc > 0
+    ImageKind image = ImageKind::hypersurface;
+    std::string method = "groebner";
+    algebra::GroebnerStats stats;
+};
+
+// Throws Timeout when options.deadline passes before the elimination finishes.
+ImplicitResult implicitize(const Parametrization& map,
+                           const algebra::GroebnerOptions& options = {});
+
+// Does f vanish identically on the parametrization? Substitutes xᵢ = pᵢ/qᵢ exactly:
+// Σ c_α Π pᵢ^αᵢ qᵢ^(dᵢ−αᵢ) must be the zero polynomial, with dᵢ the degree of f in xᵢ.
+bool vanishes_on(const algebra::Polynomial& f, const Parametrization& map);
+
+// Human-readable sentence for an ImageKind ("the image is a curve in space: ...").
+std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t num_coordinates);
+
+}  // namespace locus::implicit
