@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <string>
+#include <type_traits>
 
 #include "algebra/error.h"
 
@@ -110,8 +111,9 @@ RationalFunction divide(const RationalFunction& p, const RationalFunction& q,
 template <class Value>
 class InfixParser {
   public:
-    InfixParser(std::string_view text, const RingPtr& ring, std::size_t line, std::size_t column)
-        : lexer_(text, line, column), ring_(ring) {
+    InfixParser(std::string_view text, const RingPtr& ring, std::size_t line, std::size_t column,
+                std::vector<std::size_t>* half_angle = nullptr)
+        : lexer_(text, line, column), ring_(ring), half_angle_(half_angle) {
         token_ = lexer_.next();
     }
 
@@ -226,6 +228,9 @@ class InfixParser {
         }
         if (token_.kind == TokenKind::identifier) {
             const auto var = ring_->variable_index(token_.text);
+            if (!var && (token_.text == "sin" || token_.text == "cos")) {
+                return trigonometric();
+            }
             if (!var) {
                 fail("a declared variable");
             }
@@ -245,8 +250,47 @@ class InfixParser {
         fail("a number, a variable or '('");
     }
 
+    // sin(v) or cos(v) of a variable v, by the tangent half-angle substitution v -> tan(v/2):
+    // cos = (1 - v^2)/(1 + v^2), sin = 2v/(1 + v^2). Only rational functions, and only when the
+    // caller asked for it (half_angle_ collects the variables substituted).
+    Value trigonometric() {
+        const Token function = token_;
+        if constexpr (!std::is_same_v<Value, RationalFunction>) {
+            fail("a declared variable (" + function.text + " is not a polynomial)");
+        } else {
+            if (half_angle_ == nullptr) {
+                fail("a declared variable (" + function.text + " is not allowed here)");
+            }
+            token_ = lexer_.next();
+            if (!is_symbol('(')) {
+                fail("'(' after " + function.text);
+            }
+            token_ = lexer_.next();
+            const auto var = token_.kind == TokenKind::identifier
+                                 ? ring_->variable_index(token_.text)
+                                 : std::nullopt;
+            if (!var) {
+                fail("a parameter (sin and cos take a parameter itself, such as cos(u))");
+            }
+            token_ = lexer_.next();
+            if (!is_symbol(')')) {
+                fail("')' (sin and cos take a parameter itself, such as cos(u))");
+            }
+            token_ = lexer_.next();
+            if (std::find(half_angle_->begin(), half_angle_->end(), *var) == half_angle_->end()) {
+                half_angle_->push_back(*var);
+            }
+            const Polynomial t = Polynomial::variable(ring_, *var);
+            const Polynomial one = Polynomial::constant(ring_, Rational(1));
+            const Polynomial denominator = one + t * t;
+            return function.text == "cos" ? RationalFunction(one - t * t, denominator)
+                                          : RationalFunction(Rational(2) * t, denominator);
+        }
+    }
+
     Lexer lexer_;
     const RingPtr& ring_;
+    std::vector<std::size_t>* half_angle_;
     Token token_;
 };
 
@@ -272,8 +316,9 @@ Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::siz
 }
 
 RationalFunction parse_rational_function(std::string_view text, const RingPtr& ring,
-                                         std::size_t line, std::size_t first_column) {
-    return InfixParser<RationalFunction>(text, ring, line, first_column).parse();
+                                         std::size_t line, std::size_t first_column,
+                                         std::vector<std::size_t>* half_angle) {
+    return InfixParser<RationalFunction>(text, ring, line, first_column, half_angle).parse();
 }
 
 std::vector<std::string> parse_name_list(std::string_view text, std::size_t line,

@@ -21,9 +21,12 @@ Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::siz
 
 // The same grammar, but `/` divides by any non-zero expression: a quotient of polynomials such
 // as `(1-t^2)/(1+t^2)`, returned in lowest terms. A divisor that is identically zero is a
-// ParseError at the divisor.
+// ParseError at the divisor. With `half_angle`, sin(v) and cos(v) of a variable v are accepted
+// and replaced by the tangent half-angle forms 2v/(1+v^2) and (1-v^2)/(1+v^2) (v now standing
+// for tan(v/2)); the indices of such variables are appended to *half_angle.
 RationalFunction parse_rational_function(std::string_view text, const RingPtr& ring,
-                                         std::size_t line = 1, std::size_t first_column = 1);
+                                         std::size_t line = 1, std::size_t first_column = 1,
+                                         std::vector<std::size_t>* half_angle = nullptr);
 
 // The contents of an ideal file: its ring (variables and order) and its generators in file
 // order (zero generators are dropped), with the line each generator came from.

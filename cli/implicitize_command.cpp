@@ -56,6 +56,14 @@ int run_implicitize(const ImplicitizeArgs& args) {
     const implicit::ImplicitResult r = implicit::implicitize(map, options);
     finish_progress();
     std::fprintf(stderr, "method: groebner (elimination)\n");
+    for (const std::size_t v : map.half_angle) {
+        const std::string& u = map.parameter_ring->variable_name(v);
+        std::fprintf(stderr,
+                     "trigonometric input: cos(%s) -> (1-%s^2)/(1+%s^2), sin(%s) -> 2*%s/(1+%s^2), "
+                     "with %s standing for tan(%s/2)\n",
+                     u.c_str(), u.c_str(), u.c_str(), u.c_str(), u.c_str(), u.c_str(), u.c_str(),
+                     u.c_str());
+    }
     const std::size_t k = map.parameter_ring->num_vars();
     if (r.equation) {
         std::cout << algebra::format_polynomials(std::vector{*r.equation}, *r.ring, format);

@@ -97,8 +97,8 @@ Parametrization parse_parametrization(std::string_view text) {
             }
             throw ParseError(line, 1, "an assignment '" + allowed[i] + " = ...'", "end of input");
         }
-        // Name a trigonometric function plainly instead of calling it an unknown variable.
-        for (const char* f : {"sin", "cos", "tan", "exp", "log", "sqrt"}) {
+        // Name an unsupported function plainly instead of calling it an unknown variable.
+        for (const char* f : {"tan", "exp", "log", "sqrt"}) {
             const auto at = a.expression.find(std::string(f) + "(");
             if (at != std::string_view::npos && !result.parameter_ring->variable_index(f)) {
                 throw ParseError(a.line, a.column + at,
@@ -109,7 +109,7 @@ Parametrization parse_parametrization(std::string_view text) {
         }
         result.coordinates.push_back(allowed[i]);
         result.components.push_back(algebra::parse_rational_function(
-            a.expression, result.parameter_ring, a.line, a.column));
+            a.expression, result.parameter_ring, a.line, a.column, &result.half_angle));
     }
     return result;
 }

@@ -51,6 +51,25 @@ const ClassicCase classic_cases[] = {
 INSTANTIATE_TEST_SUITE_P(Implicitize, Classic, ::testing::ValuesIn(classic_cases),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
 
+TEST(Implicitize, TrigonometricTorusAndSphereByHalfAngle) {
+    const Parametrization torus = parse_parametrization(
+        "params: u,v\nx = (2+cos(v))*cos(u)\ny = (2+cos(v))*sin(u)\nz = sin(v)\n");
+    EXPECT_EQ(torus.half_angle.size(), 2u);
+    const ImplicitResult r = implicitize(torus);
+    ASSERT_TRUE(r.equation.has_value());
+    // (x² + y² + z² + R² − r²)² − 4R²(x² + y²) with R = 2, r = 1.
+    const algebra::Polynomial expected =
+        algebra::parse_polynomial("(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", r.ring);
+    EXPECT_EQ(*r.equation, expected.primitive_part());
+    EXPECT_TRUE(vanishes_on(*r.equation, torus));
+
+    const Parametrization sphere =
+        parse_parametrization("params: u,v\nx = cos(u)*cos(v)\ny = sin(u)*cos(v)\nz = sin(v)\n");
+    const ImplicitResult s = implicitize(sphere);
+    ASSERT_TRUE(s.equation.has_value());
+    EXPECT_EQ(algebra::to_string(*s.equation), "x^2+y^2+z^2-1");
+}
+
 TEST(Implicitize, EnneperHasDegreeNine) {
     const Parametrization map = parse_parametrization(
         "params: u,v\nx = u - u^3/3 + u*v^2\ny = v - v^3/3 + v*u^2\nz = u^2 - v^2\n");
@@ -89,7 +108,8 @@ TEST(Parametrization, BadInputsReportLineAndColumn) {
         {"params: t\nx = t\nx = t^2\ny = t\n", 3, 1, "each coordinate assigned once"},
         {"params: t\nx = t\n", 3, 1, "an assignment 'y = ...'"},  // end of input: line 3
         {"params: t\nx = t/(t-t)\ny = t\n", 2, 7, "a non-zero divisor"},
-        {"params: u\nx = cos(u)\ny = sin(u)\n", 2, 5, "cos is not supported yet"},
+        {"params: u\nx = tan(u)\ny = u\n", 2, 5, "tan is not supported yet"},
+        {"params: u\nx = cos(2*u)\ny = u\n", 2, 9, "sin and cos take a parameter itself"},
         {"params: t\nw = t\n", 2, 1, "a coordinate x, y or z"},
         {"", 1, 1, "a 'params:' line"},
     };
