@@ -352,6 +352,23 @@ std::vector<std::string> parse_name_list(std::string_view text, std::size_t line
     return names;
 }
 
+std::vector<SourceLine> split_lines(std::string_view text) {
+    std::vector<SourceLine> lines;
+    std::size_t pos = 0;
+    while (true) {
+        const std::size_t eol = std::min(text.find('\n', pos), text.size());
+        std::string_view raw = text.substr(pos, eol - pos);
+        if (const auto hash = raw.find('#'); hash != std::string_view::npos) {
+            raw = raw.substr(0, hash);
+        }
+        lines.push_back({raw, lines.size() + 1});
+        if (eol == text.size()) {
+            return lines;
+        }
+        pos = eol + 1;
+    }
+}
+
 IdealFile parse_ideal_file(std::string_view text) {
     IdealFile file;
     std::vector<std::string> names;
@@ -363,22 +380,11 @@ IdealFile parse_ideal_file(std::string_view text) {
         std::size_t line, column;
     };
     std::vector<PendingLine> generator_lines;
-    std::size_t line_number = 0;
-    std::size_t pos = 0;
-    while (pos <= text.size()) {
-        const std::size_t eol = std::min(text.find('\n', pos), text.size());
-        std::string_view raw = text.substr(pos, eol - pos);
-        ++line_number;
-        pos = eol + 1;
-        if (const auto hash = raw.find('#'); hash != std::string_view::npos) {
-            raw = raw.substr(0, hash);
-        }
+    const std::vector<SourceLine> lines = split_lines(text);
+    for (const auto& [raw, line_number] : lines) {
         std::size_t lead = 0;
         const std::string_view content = trim(raw, &lead);
         if (content.empty()) {
-            if (eol == text.size()) {
-                break;
-            }
             continue;
         }
         const auto colon = content.find(':');
@@ -411,12 +417,9 @@ IdealFile parse_ideal_file(std::string_view text) {
             }
             generator_lines.push_back({raw, line_number, 1});
         }
-        if (eol == text.size()) {
-            break;
-        }
     }
     if (!have_vars) {
-        throw ParseError(line_number == 0 ? 1 : line_number, 1, "a 'vars:' line", "end of input");
+        throw ParseError(lines.back().number, 1, "a 'vars:' line", "end of input");
     }
     MonomialOrder order = order_line == 0
                               ? MonomialOrder::grevlex(names.size())

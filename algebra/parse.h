@@ -43,6 +43,15 @@ struct IdealFile {
 //     x^2+y^2+z^2-1
 IdealFile parse_ideal_file(std::string_view text);
 
+// One line of a line-oriented file (ideal and parametrization files): its text with any `#`
+// comment removed, and its 1-based number. Every line is returned, blank ones included, so the
+// last number is the line where the input ends.
+struct SourceLine {
+    std::string_view text;
+    std::size_t number;
+};
+std::vector<SourceLine> split_lines(std::string_view text);
+
 // Splits a comma-separated identifier list such as "x, y,z" (for `vars:` and `params:`),
 // reporting bad names and repeats at their column.
 std::vector<std::string> parse_name_list(std::string_view text, std::size_t line,

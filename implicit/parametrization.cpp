@@ -27,15 +27,9 @@ Parametrization parse_parametrization(std::string_view text) {
     };
     std::vector<Assignment> assignments(3, Assignment{{}, 0, 0});
     bool have_params = false;
-    std::size_t line = 0, pos = 0;
-    while (pos <= text.size()) {
-        const std::size_t eol = std::min(text.find('\n', pos), text.size());
-        std::string_view raw = text.substr(pos, eol - pos);
-        ++line;
-        pos = eol + 1;
-        if (const auto hash = raw.find('#'); hash != std::string_view::npos) {
-            raw = raw.substr(0, hash);
-        }
+    const std::vector<algebra::SourceLine> lines = algebra::split_lines(text);
+    const std::size_t last_line = lines.back().number;
+    for (const auto& [raw, line] : lines) {
         const std::size_t start = first_non_space(raw);
         if (start < raw.size() && raw.find_first_not_of(" \t\r", start) != std::string_view::npos) {
             const auto colon = raw.find(':');
@@ -82,12 +76,9 @@ Parametrization parse_parametrization(std::string_view text) {
                 a = {raw.substr(equals + 1), line, equals + 2};
             }
         }
-        if (eol == text.size()) {
-            break;
-        }
     }
     if (!have_params) {
-        throw ParseError(line == 0 ? 1 : line, 1, "a 'params:' line", "end of input");
+        throw ParseError(last_line, 1, "a 'params:' line", "end of input");
     }
     for (std::size_t i = 0; i < 3; ++i) {
         const Assignment& a = assignments[i];
@@ -95,7 +86,8 @@ Parametrization parse_parametrization(std::string_view text) {
             if (i == 2) {
                 break;  // plane curve
             }
-            throw ParseError(line, 1, "an assignment '" + allowed[i] + " = ...'", "end of input");
+            throw ParseError(last_line, 1, "an assignment '" + allowed[i] + " = ...'",
+                             "end of input");
         }
         // Name an unsupported function plainly instead of calling it an unknown variable.
         for (const char* f : {"tan", "exp", "log", "sqrt"}) {
