@@ -77,6 +77,19 @@ Polynomial gcd(const Polynomial& f, const Polynomial& g) {
     return from_fmpq_mpoly(r.get(), ctx).monic();
 }
 
+Polynomial resultant(const Polynomial& f, const Polynomial& g, std::size_t var) {
+    require_same_ring(f, g);
+    if (var >= f.ring()->num_vars()) {
+        throw InputError("resultant", "no variable with index " + std::to_string(var));
+    }
+    FlintContext ctx(f.ring());
+    FlintPolynomial a = to_fmpq_mpoly(f, ctx), b = to_fmpq_mpoly(g, ctx), r(ctx);
+    if (!fmpq_mpoly_resultant(r.get(), a.get(), b.get(), static_cast<slong>(var), ctx.get())) {
+        throw Error("FLINT could not compute a resultant");
+    }
+    return from_fmpq_mpoly(r.get(), ctx);
+}
+
 namespace {
 
 Factorization run_factorization(const Polynomial& f, bool square_free_only) {

@@ -50,6 +50,10 @@ class FlintPolynomial {
 FlintPolynomial to_fmpq_mpoly(const Polynomial& f, FlintContext& ctx);
 Polynomial from_fmpq_mpoly(const fmpq_mpoly_struct* f, FlintContext& ctx);
 
+// The resultant of f and g with respect to variable `var` (Sylvester, computed by FLINT); the
+// result does not contain `var`.
+Polynomial resultant(const Polynomial& f, const Polynomial& g, std::size_t var);
+
 // Greatest common divisor, made monic (0 when both are 0).
 Polynomial gcd(const Polynomial& f, const Polynomial& g);
 

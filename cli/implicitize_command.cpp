@@ -24,9 +24,9 @@ struct ImplicitizeArgs {
 
 int run_implicitize(const ImplicitizeArgs& args) {
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
-    if (args.method != "auto" && args.method != "groebner") {
-        throw CommandFailure(exit_input, "--method " + args.method +
-                                             ": only groebner (and auto) are available so far");
+    if (args.method != "auto" && args.method != "groebner" && args.method != "resultant") {
+        throw CommandFailure(exit_input,
+                             "--method " + args.method + ": expected auto, groebner or resultant");
     }
     std::string text, source;
     if (!args.params.empty()) {
@@ -53,9 +53,14 @@ int run_implicitize(const ImplicitizeArgs& args) {
     algebra::GroebnerOptions options;
     options.deadline = deadline_after(args.timeout_seconds);
     options.progress = terminal_progress("implicitize");
-    const implicit::ImplicitResult r = implicit::implicitize(map, options);
+    const implicit::ImplicitResult r = args.method == "resultant"
+                                           ? implicit::implicitize_by_resultant(map)
+                                           : implicit::implicitize(map, options);
     finish_progress();
-    std::fprintf(stderr, "method: groebner (elimination)\n");
+    std::fprintf(stderr, "method: %s\n",
+                 r.method == "resultant" ? "resultant (iterated Sylvester, factor kept by "
+                                           "substitution)"
+                                         : "groebner (elimination)");
     for (const std::size_t v : map.half_angle) {
         const std::string& u = map.parameter_ring->variable_name(v);
         std::fprintf(stderr,
@@ -107,7 +112,7 @@ void add_implicitize_command(CLI::App& app, int& exit_code) {
                     "\"x = ...\"")
         ->required();
     cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
-    cmd->add_option("--method", args->method, "auto | groebner");
+    cmd->add_option("--method", args->method, "auto (= groebner) | groebner | resultant");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
     cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
     cmd->callback([args, &exit_code] { exit_code = run_implicitize(*args); });

@@ -95,6 +95,61 @@ ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOp
     return result;
 }
 
+ImplicitResult implicitize_by_resultant(const Parametrization& map) {
+    const RingPtr& params = map.parameter_ring;
+    const std::size_t k = params->num_vars();
+    const std::size_t n = map.coordinates.size();
+    if (!((k == 1 && n == 2) || (k == 2 && n == 3))) {
+        throw InputError("--method resultant",
+                         "applies to plane curves (one parameter, x and y) "
+                         "and surfaces (two parameters, x, y and z) only");
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> names = params->variable_names();
+    for (const auto& c : map.coordinates) {
+        if (std::find(names.begin(), names.end(), c) != names.end()) {
+            throw InputError("'" + c + "'", "a parameter may not be named like a coordinate");
+        }
+        names.push_back(c);
+    }
+    const RingPtr big = PolyRing::make(names, MonomialOrder::grevlex(names.size()));
+    std::vector<std::size_t> lift(k);
+    std::iota(lift.begin(), lift.end(), 0);
+    std::vector<Polynomial> h;
+    for (std::size_t i = 0; i < n; ++i) {
+        h.push_back(map.components[i].denominator().in_ring(big, lift) *
+                        Polynomial::variable(big, k + i) -
+                    map.components[i].numerator().in_ring(big, lift));
+    }
+    Polynomial r = k == 1 ? algebra::resultant(h[0], h[1], 0)
+                          : algebra::resultant(algebra::resultant(h[0], h[1], 0),
+                                               algebra::resultant(h[0], h[2], 0), 1);
+    if (r.is_zero()) {
+        throw Error("the resultant vanishes identically (the map is degenerate for this route)");
+    }
+    ImplicitResult result;
+    result.method = "resultant";
+    result.ring = PolyRing::make(map.coordinates, MonomialOrder::grevlex(n));
+    std::vector<std::size_t> down(names.size(), 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        down[k + i] = i;
+    }
+    const Polynomial in_coordinates = r.in_ring(result.ring, down);
+    for (const auto& [factor, multiplicity] : algebra::factor(in_coordinates).factors) {
+        if (!factor.is_constant() && vanishes_on(factor, map)) {
+            result.equation = factor.primitive_part();
+            break;
+        }
+    }
+    if (!result.equation) {
+        throw Error("no factor of the resultant vanishes on the parametrization");
+    }
+    result.generators = {*result.equation};
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
 bool vanishes_on(const Polynomial& f, const Parametrization& map) {
     const RingPtr& params = map.parameter_ring;
     const std::size_t n = map.coordinates.size();

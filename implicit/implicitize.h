@@ -38,6 +38,14 @@ struct ImplicitResult {
 ImplicitResult implicitize(const Parametrization& map,
                            const algebra::GroebnerOptions& options = {});
 
+// The same by iterated resultants (Sylvester): Res_t(q₁x − p₁, q₂y − p₂) for plane curves,
+// Res_t(Res_s(h₁, h₂), Res_s(h₁, h₃)) for surfaces, then exact factorization (FLINT) keeps the
+// irreducible factor that vanishes on the parametrization; the extraneous factors (from
+// denominators and from the elimination itself) are dropped. Applies to plane curves and
+// surfaces only (InputError otherwise); throws Error when the resultant vanishes identically
+// or no factor vanishes on the map, so the caller can fall back to implicitize().
+ImplicitResult implicitize_by_resultant(const Parametrization& map);
+
 // Does f vanish identically on the parametrization? Substitutes xᵢ = pᵢ/qᵢ exactly:
 // Σ c_α Π pᵢ^αᵢ qᵢ^(dᵢ−αᵢ) must be the zero polynomial, with dᵢ the degree of f in xᵢ.
 bool vanishes_on(const algebra::Polynomial& f, const Parametrization& map);

@@ -71,5 +71,10 @@ expect "implicitize not principal" 0 "not principal" -- "$locus" implicitize -p 
 printf 'params: t\nx = t\nx = t^2\n' > "$tmp/twice.param"
 expect "implicitize bad input" 2 "line 3, column 1" -- "$locus" implicitize "$tmp/twice.param"
 
-echo "$((26 - failures)) passed, $failures failed"
+expect "implicitize by resultant" 0 "method: resultant" -- \
+    "$locus" implicitize -p t --method resultant "x = t^2" "y = t^3"
+expect "resultant refuses space curves" 2 "plane curves" -- \
+    "$locus" implicitize -p t --method resultant "x=t" "y=t^2" "z=t^3"
+
+echo "$((28 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

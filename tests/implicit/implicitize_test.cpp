@@ -27,6 +27,10 @@ TEST_P(Classic, KnownEquationVerified) {
     const algebra::Polynomial expected = algebra::parse_polynomial(c.equation, r.ring);
     EXPECT_EQ(*r.equation, expected.primitive_part()) << algebra::to_string(*r.equation);
     EXPECT_TRUE(vanishes_on(*r.equation, map));
+    // The resultant route must agree wherever it applies (plane curves and surfaces).
+    const ImplicitResult by_resultant = implicitize_by_resultant(map);
+    ASSERT_TRUE(by_resultant.equation.has_value());
+    EXPECT_EQ(*by_resultant.equation, *r.equation);
     // A deliberately wrong equation must fail the check.
     EXPECT_FALSE(vanishes_on(*r.equation + algebra::Polynomial::variable(r.ring, 0), map));
 }
@@ -77,6 +81,19 @@ TEST(Implicitize, EnneperHasDegreeNine) {
     ASSERT_TRUE(r.equation.has_value());
     EXPECT_EQ(r.equation->total_degree(), 9);
     EXPECT_TRUE(vanishes_on(*r.equation, map));
+}
+
+TEST(Implicitize, ResultantAgreesOnEnneperAndTorusAndRefusesSpaceCurves) {
+    const char* files[] = {
+        "params: u,v\nx = u - u^3/3 + u*v^2\ny = v - v^3/3 + v*u^2\nz = u^2 - v^2\n",
+        "params: u,v\nx = (2+cos(v))*cos(u)\ny = (2+cos(v))*sin(u)\nz = sin(v)\n"};
+    for (const char* f : files) {
+        SCOPED_TRACE(f);
+        const Parametrization map = parse_parametrization(f);
+        EXPECT_EQ(implicitize_by_resultant(map).equation, implicitize(map).equation);
+    }
+    EXPECT_THROW(implicitize_by_resultant(parse_parametrization("params: t\nx=t\ny=t^2\nz=t^3\n")),
+                 InputError);
 }
 
 TEST(Implicitize, TwistedCubicIsNotPrincipal) {
