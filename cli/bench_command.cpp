@@ -12,13 +12,16 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
+#include "algebra/error.h"
 #include "algebra/groebner/buchberger.h"
 #include "algebra/print.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "implicit/implicitize.h"
 
 #ifndef LOCUS_SOURCE_DIR
 #define LOCUS_SOURCE_DIR "."
@@ -34,6 +37,7 @@ struct BenchArgs {
     std::vector<std::string> cases;
     std::string singular = "Singular";
     double min_seconds = 0.2;
+    double limit_seconds = 60;
 };
 
 struct Timing {
@@ -97,10 +101,159 @@ Timing time_singular(const std::string& singular, const algebra::IdealFile& idea
     return t;
 }
 
+// Seconds of Singular's `eliminate` on the elimination ideal of `map`, or -1 when Singular
+// failed or took longer than `limit_seconds` (killed by timeout(1)).
+double time_singular_eliminate(const std::string& singular, const implicit::Parametrization& map,
+                               double limit_seconds) {
+    const implicit::EliminationIdeal ideal = implicit::elimination_ideal(map);
+    std::string script = "system(\"--ticks-per-sec\", 1000000);\n" +
+                         algebra::singular_ring(*ideal.ring) + "\nideal I =";
+    for (std::size_t i = 0; i < ideal.generators.size(); ++i) {
+        script += (i ? ",\n  " : "\n  ") + algebra::to_string(ideal.generators[i]);
+    }
+    std::string product;
+    for (const std::size_t v : ideal.eliminated) {
+        if (!product.empty()) {
+            product += '*';
+        }
+        product += ideal.ring->variable_name(v);
+    }
+    script += ";\nint t0 = rtimer;\nideal E = eliminate(I, " + product +
+              ");\nprint(\"LOCUSBENCH \" + string(rtimer - t0) + \" 1\");\nquit;\n";
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("locus-bench-" + std::to_string(::getpid()) + ".sing");
+    {
+        std::ofstream out(path);
+        out << script;
+    }
+    const std::string command = "timeout " + std::to_string(std::lround(limit_seconds)) + " " +
+                                singular + " -q --no-rc " + path.string() + " </dev/null 2>&1";
+    double seconds = -1;
+    if (FILE* pipe = popen(command.c_str(), "r")) {
+        char line[4096];
+        while (std::fgets(line, sizeof line, pipe)) {
+            long us = 0;
+            int reps = 0;
+            if (std::sscanf(line, "LOCUSBENCH %ld %d", &us, &reps) == 2) {
+                seconds = static_cast<double>(us) / 1e6;
+            }
+        }
+        pclose(pipe);
+    }
+    std::filesystem::remove(path);
+    return seconds;
+}
+
+std::string seconds_or_limit(double seconds, double limit) {
+    if (seconds < 0) {
+        return ">" + std::to_string(std::lround(limit));
+    }
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6f", seconds);
+    return buffer;
+}
+
+std::vector<std::string> suite_cases(const BenchArgs& args, const std::string& dir) {
+    if (!args.cases.empty()) {
+        return args.cases;
+    }
+    std::ifstream suite(dir + "/SUITE.txt");
+    if (!suite) {
+        throw CommandFailure(exit_input, dir + "/SUITE.txt: cannot open (use --data)");
+    }
+    std::vector<std::string> cases;
+    std::string name;
+    while (std::getline(suite, name)) {
+        if (!name.empty() && name[0] != '#') {
+            cases.push_back(name);
+        }
+    }
+    return cases;
+}
+
+// `locus bench implicit`: every case of bench/data/implicit/SUITE.txt by each method, and by
+// Singular's eliminate on the same elimination ideal when Singular is installed. Groebner runs
+// under a deadline of --limit seconds, Singular under timeout(1) with the same limit. `auto` is
+// Gröbner when it finishes within 0.2 s and the resultant route after that, as in
+// `locus implicitize`.
+int run_implicit_bench(const BenchArgs& args) {
+    const std::string dir = args.data_dir + "/implicit";
+    const std::vector<std::string> cases = suite_cases(args, dir);
+    const bool with_singular = args.singular != "off" && on_path(args.singular);
+    if (args.csv) {
+        std::cout << "case,degree,terms,auto_method,auto_seconds,groebner_seconds,"
+                     "resultant_seconds,singular_eliminate_seconds\n";
+    } else {
+        std::printf("%-18s %6s %6s %-10s %10s %10s %10s %10s\n", "case", "degree", "terms", "auto",
+                    "auto s", "groebner s", "result. s", "Singular s");
+    }
+    auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
+    for (const auto& name : cases) {
+        const implicit::Parametrization map =
+            implicit::parse_parametrization(read_input(dir + "/" + name + ".param"));
+        double resultant_seconds = -1;
+        std::optional<implicit::ImplicitResult> result;
+        try {
+            const auto t = std::chrono::steady_clock::now();
+            result = implicit::implicitize_by_resultant(map);
+            resultant_seconds = seconds_since(t);
+        } catch (const Error&) {
+            // not applicable or gave up: auto falls back to Gröbner
+        }
+        double groebner_seconds = -1;
+        try {
+            algebra::GroebnerOptions options;
+            options.deadline = deadline_after(args.limit_seconds);
+            const auto t = std::chrono::steady_clock::now();
+            implicit::ImplicitResult by_groebner = implicit::implicitize(map, options);
+            groebner_seconds = seconds_since(t);
+            if (!result) {
+                result = std::move(by_groebner);
+            }
+        } catch (const Timeout&) {
+            // reported as ">limit"
+        }
+        // As in `locus implicitize`: Gröbner when it finishes within 0.2 s, else resultants
+        // (0.2 s wasted on the way), else Gröbner.
+        const bool groebner_quick = groebner_seconds >= 0 && groebner_seconds <= 0.2;
+        const bool auto_is_resultant = !groebner_quick && resultant_seconds >= 0;
+        const double auto_seconds = groebner_quick      ? groebner_seconds
+                                    : auto_is_resultant ? 0.2 + resultant_seconds
+                                                        : groebner_seconds;
+        const double singular_seconds =
+            with_singular ? time_singular_eliminate(args.singular, map, args.limit_seconds) : -2;
+        const long degree = result && result->equation ? result->equation->total_degree() : -1;
+        const std::size_t terms = result && result->equation ? result->equation->num_terms() : 0;
+        const std::string singular_text =
+            singular_seconds == -2 ? "-" : seconds_or_limit(singular_seconds, args.limit_seconds);
+        if (args.csv) {
+            std::cout << name << "," << degree << "," << terms << ","
+                      << (auto_is_resultant ? "resultant" : "groebner") << "," << auto_seconds
+                      << "," << groebner_seconds << "," << resultant_seconds << ","
+                      << singular_seconds << "\n";
+        } else {
+            std::printf(
+                "%-18s %6ld %6zu %-10s %10s %10s %10s %10s\n", name.c_str(), degree, terms,
+                auto_is_resultant ? "resultant" : "groebner",
+                seconds_or_limit(auto_seconds, args.limit_seconds).c_str(),
+                seconds_or_limit(groebner_seconds, args.limit_seconds).c_str(),
+                resultant_seconds < 0 ? "-" : seconds_or_limit(resultant_seconds, 0).c_str(),
+                singular_text.c_str());
+        }
+        std::cout.flush();
+    }
+    return exit_ok;
+}
+
 int run_bench(const BenchArgs& args) {
+    if (args.suite == "implicit") {
+        return run_implicit_bench(args);
+    }
     if (args.suite != "groebner") {
-        throw CommandFailure(exit_input,
-                             "bench: unknown suite '" + args.suite + "' (available: groebner)");
+        throw CommandFailure(exit_input, "bench: unknown suite '" + args.suite +
+                                             "' (available: groebner, implicit)");
     }
     std::vector<std::string> cases = args.cases;
     if (cases.empty()) {
@@ -181,8 +334,8 @@ int run_bench(const BenchArgs& args) {
 
 void add_bench_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* cmd = app.add_subcommand("bench", "Benchmark suites (groebner)");
-    cmd->add_option("suite", args->suite, "the suite: groebner")->required();
+    CLI::App* cmd = app.add_subcommand("bench", "Benchmark suites (groebner, implicit)");
+    cmd->add_option("suite", args->suite, "the suite: groebner | implicit")->required();
     cmd->add_flag("--csv", args->csv, "write CSV rows instead of a table");
     cmd->add_option("--data", args->data_dir, "folder with SUITE.txt and the .ideal files");
     cmd->add_option("--cases", args->cases, "run only these cases")->delimiter(',');
@@ -190,6 +343,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                     "Singular executable for the same-run reference, or 'off'");
     cmd->add_option("--min-seconds", args->min_seconds,
                     "repeat each case until this much time has passed (at most 20 runs)");
+    cmd->add_option("--limit", args->limit_seconds,
+                    "implicit suite: give Gröbner and Singular at most this many seconds");
     cmd->callback([args, &exit_code] { exit_code = run_bench(*args); });
 }
 

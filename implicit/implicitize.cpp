@@ -16,7 +16,7 @@ using algebra::PolyRing;
 using algebra::Rational;
 using algebra::RingPtr;
 
-ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOptions& options) {
+EliminationIdeal elimination_ideal(const Parametrization& map) {
     const RingPtr& params = map.parameter_ring;
     const std::size_t k = params->num_vars();
     const std::size_t n = map.coordinates.size();
@@ -62,10 +62,20 @@ ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOp
                              Polynomial::variable(big, k) *
                                  algebra::square_free_part(denominators));
     }
-    std::vector<std::size_t> eliminated(first_coordinate);
-    std::iota(eliminated.begin(), eliminated.end(), 0);
+    EliminationIdeal ideal{big, std::move(generators), {}, first_coordinate};
+    ideal.eliminated.resize(first_coordinate);
+    std::iota(ideal.eliminated.begin(), ideal.eliminated.end(), 0);
+    return ideal;
+}
+
+ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOptions& options) {
+    const EliminationIdeal ideal = elimination_ideal(map);
+    const std::size_t n = map.coordinates.size();
+    const std::size_t first_coordinate = ideal.first_coordinate;
+    const std::vector<std::string>& names = ideal.ring->variable_names();
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<Polynomial> kept = algebra::eliminate(generators, eliminated, options);
+    const std::vector<Polynomial> kept =
+        algebra::eliminate(ideal.generators, ideal.eliminated, options);
 
     ImplicitResult result;
     result.ring = PolyRing::make(map.coordinates, MonomialOrder::grevlex(n));

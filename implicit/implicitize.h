@@ -34,6 +34,18 @@ struct ImplicitResult {
     algebra::GroebnerStats stats;
 };
 
+// The ideal that implicitize() eliminates from: generators qᵢxᵢ − pᵢ (and 1 − w·q for rational
+// maps, q the square-free part of the denominators' product) in Q[params, (w,) coordinates]
+// under grevlex; `eliminated` lists the parameters and w, coordinates start at
+// `first_coordinate`. Public so that benchmarks can hand the same ideal to other systems.
+struct EliminationIdeal {
+    algebra::RingPtr ring;
+    std::vector<algebra::Polynomial> generators;
+    std::vector<std::size_t> eliminated;
+    std::size_t first_coordinate = 0;
+};
+EliminationIdeal elimination_ideal(const Parametrization& map);
+
 // Throws Timeout when options.deadline passes before the elimination finishes.
 ImplicitResult implicitize(const Parametrization& map,
                            const algebra::GroebnerOptions& options = {});
