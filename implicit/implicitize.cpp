@@ -16,23 +16,19 @@ using algebra::PolyRing;
 using algebra::Rational;
 using algebra::RingPtr;
 
-EliminationIdeal elimination_ideal(const Parametrization& map) {
-    const RingPtr& params = map.parameter_ring;
-    const std::size_t k = params->num_vars();
-    const std::size_t n = map.coordinates.size();
-    bool rational = false;
-    for (const auto& c : map.components) {
-        rational = rational || !c.is_polynomial();
-    }
-    // Big ring: parameters, then w (for rational maps), then the coordinates.
-    std::vector<std::string> names = params->variable_names();
-    std::string w_name = "w";
-    while (std::find(names.begin(), names.end(), w_name) != names.end() ||
-           std::find(map.coordinates.begin(), map.coordinates.end(), w_name) !=
-               map.coordinates.end()) {
-        w_name += "_";
-    }
-    if (rational) {
+namespace {
+
+// Q[params, (w,) x, y(, z)] under grevlex, with w given a fresh name; the coordinates start at
+// the returned index.
+std::pair<RingPtr, std::size_t> joint_ring(const Parametrization& map, bool with_w) {
+    std::vector<std::string> names = map.parameter_ring->variable_names();
+    if (with_w) {
+        std::string w_name = "w";
+        while (std::find(names.begin(), names.end(), w_name) != names.end() ||
+               std::find(map.coordinates.begin(), map.coordinates.end(), w_name) !=
+                   map.coordinates.end()) {
+            w_name += "_";
+        }
         names.push_back(w_name);
     }
     const std::size_t first_coordinate = names.size();
@@ -42,18 +38,40 @@ EliminationIdeal elimination_ideal(const Parametrization& map) {
         }
         names.push_back(c);
     }
-    const RingPtr big = PolyRing::make(names, MonomialOrder::grevlex(names.size()));
-    std::vector<std::size_t> lift(k);
+    return {PolyRing::make(names, MonomialOrder::grevlex(names.size())), first_coordinate};
+}
+
+// qᵢ·xᵢ − pᵢ for every coordinate, in the joint ring.
+std::vector<Polynomial> coordinate_relations(const Parametrization& map, const RingPtr& ring,
+                                             std::size_t first_coordinate) {
+    std::vector<std::size_t> lift(map.parameter_ring->num_vars());
     std::iota(lift.begin(), lift.end(), 0);
-    std::vector<Polynomial> generators;
-    Polynomial denominators = Polynomial::constant(big, Rational(1));
-    for (std::size_t i = 0; i < n; ++i) {
-        const Polynomial p = map.components[i].numerator().in_ring(big, lift);
-        const Polynomial q = map.components[i].denominator().in_ring(big, lift);
-        generators.push_back(q * Polynomial::variable(big, first_coordinate + i) - p);
-        denominators *= q;
+    std::vector<Polynomial> relations;
+    for (std::size_t i = 0; i < map.coordinates.size(); ++i) {
+        relations.push_back(map.components[i].denominator().in_ring(ring, lift) *
+                                Polynomial::variable(ring, first_coordinate + i) -
+                            map.components[i].numerator().in_ring(ring, lift));
     }
+    return relations;
+}
+
+}  // namespace
+
+EliminationIdeal elimination_ideal(const Parametrization& map) {
+    const std::size_t k = map.parameter_ring->num_vars();
+    bool rational = false;
+    for (const auto& c : map.components) {
+        rational = rational || !c.is_polynomial();
+    }
+    const auto [big, first_coordinate] = joint_ring(map, rational);
+    std::vector<Polynomial> generators = coordinate_relations(map, big, first_coordinate);
     if (rational) {
+        std::vector<std::size_t> lift(k);
+        std::iota(lift.begin(), lift.end(), 0);
+        Polynomial denominators = Polynomial::constant(big, Rational(1));
+        for (const auto& c : map.components) {
+            denominators *= c.denominator().in_ring(big, lift);
+        }
         // Saturating by the product of the denominators or by its square-free part gives the
         // same ideal (saturation depends only on the radical), and the square-free part keeps
         // the degree of w·q low: the trigonometric torus, whose denominators multiply to
@@ -145,22 +163,9 @@ ImplicitResult implicitize_by_resultant(const Parametrization& map) {
                          "and surfaces (two parameters, x, y and z) only");
     }
     const auto start = std::chrono::steady_clock::now();
-    std::vector<std::string> names = params->variable_names();
-    for (const auto& c : map.coordinates) {
-        if (std::find(names.begin(), names.end(), c) != names.end()) {
-            throw InputError("'" + c + "'", "a parameter may not be named like a coordinate");
-        }
-        names.push_back(c);
-    }
-    const RingPtr big = PolyRing::make(names, MonomialOrder::grevlex(names.size()));
-    std::vector<std::size_t> lift(k);
-    std::iota(lift.begin(), lift.end(), 0);
-    std::vector<Polynomial> h;
-    for (std::size_t i = 0; i < n; ++i) {
-        h.push_back(map.components[i].denominator().in_ring(big, lift) *
-                        Polynomial::variable(big, k + i) -
-                    map.components[i].numerator().in_ring(big, lift));
-    }
+    const auto [big, first_coordinate] = joint_ring(map, false);
+    const std::vector<Polynomial> h = coordinate_relations(map, big, first_coordinate);
+    const std::vector<std::string>& names = big->variable_names();
     Polynomial r = k == 1 ? algebra::resultant(h[0], h[1], 0)
                           : algebra::resultant(algebra::resultant(h[0], h[1], 0),
                                                algebra::resultant(h[0], h[2], 0), 1);
