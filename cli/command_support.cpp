@@ -33,9 +33,7 @@ algebra::IdealFile read_ideal(const std::string& path,
     algebra::IdealFile file;
     try {
         file = algebra::parse_ideal_file(text);
-    } catch (const ParseError& e) {
-        throw CommandFailure(exit_input, name + ": " + e.what());
-    } catch (const Error& e) {
+    } catch (const Error& e) {  // ParseError, InputError, ExponentOverflow
         throw CommandFailure(exit_input, name + ": " + e.what());
     }
     if (order_override) {

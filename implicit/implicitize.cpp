@@ -207,7 +207,9 @@ bool vanishes_on(const Polynomial& f, const Parametrization& map) {
     }
     // Powers of numerators and denominators, cached.
     std::vector<std::vector<Polynomial>> num_pow(n), den_pow(n);
-    auto power = [&](std::vector<Polynomial>& cache, const Polynomial& base, long e) {
+    // Returns a reference into the cache: a copy per term and coordinate would dominate.
+    auto power = [&](std::vector<Polynomial>& cache, const Polynomial& base,
+                     long e) -> const Polynomial& {
         if (cache.empty()) {
             cache.push_back(Polynomial::constant(params, Rational(1)));
         }

@@ -5,6 +5,7 @@
 
 #include "algebra/error.h"
 #include "algebra/print.h"
+#include "tests/support/parse_error.h"
 #include "tests/support/test_data.h"
 
 namespace locus::algebra {
@@ -36,25 +37,8 @@ TEST(Parse, PrintParseRoundTrip) {
     }
 }
 
-struct BadInput {
-    const char* text;
-    std::size_t line, column;
-    const char* expected_fragment;
-};
-
-// Runs `parse` and checks that it throws a ParseError at the case's position and wording.
-template <class Parse>
-void expect_parse_error(const BadInput& c, Parse parse) {
-    SCOPED_TRACE(std::string("input: ") + c.text);
-    try {
-        parse();
-        ADD_FAILURE() << "no error";
-    } catch (const ParseError& e) {
-        EXPECT_EQ(e.line(), c.line);
-        EXPECT_EQ(e.column(), c.column);
-        EXPECT_NE(e.expected().find(c.expected_fragment), std::string::npos) << e.what();
-    }
-}
+using test::BadInput;
+using test::expect_parse_error;
 
 TEST(Parse, MalformedInputsReportLineAndColumn) {
     const RingPtr r = xyz();

@@ -7,6 +7,7 @@
 #include "algebra/error.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
+#include "tests/support/parse_error.h"
 
 namespace locus::implicit {
 namespace {
@@ -114,12 +115,7 @@ TEST(Implicitize, DegenerateMaps) {
 }
 
 TEST(Parametrization, BadInputsReportLineAndColumn) {
-    struct Bad {
-        const char* text;
-        std::size_t line, column;
-        const char* fragment;
-    };
-    const Bad cases[] = {
+    const test::BadInput cases[] = {
         {"x = t\n", 1, 1, "a 'params:' line before"},
         {"params: t\nx = q\ny = t\n", 2, 5, "a declared variable"},
         {"params: t\nx = t\nx = t^2\ny = t\n", 3, 1, "each coordinate assigned once"},
@@ -131,15 +127,7 @@ TEST(Parametrization, BadInputsReportLineAndColumn) {
         {"", 1, 1, "a 'params:' line"},
     };
     for (const auto& c : cases) {
-        SCOPED_TRACE(c.text);
-        try {
-            parse_parametrization(c.text);
-            ADD_FAILURE() << "no error";
-        } catch (const ParseError& e) {
-            EXPECT_EQ(e.line(), c.line);
-            EXPECT_EQ(e.column(), c.column);
-            EXPECT_NE(e.expected().find(c.fragment), std::string::npos) << e.what();
-        }
+        test::expect_parse_error(c, [&] { parse_parametrization(c.text); });
     }
 }
 
