@@ -21,6 +21,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/render_bench.h"
 #include "implicit/implicitize.h"
 
 #ifndef LOCUS_SOURCE_DIR
@@ -38,6 +39,10 @@ struct BenchArgs {
     std::string singular = "Singular";
     double min_seconds = 0.2;
     double limit_seconds = 60;
+    int size = 128;
+    int threads = 1;
+    std::vector<std::string> methods;
+    std::string surf = "surf-alggeo-nox";
 };
 
 struct Timing {
@@ -246,9 +251,21 @@ int run_bench(const BenchArgs& args) {
     if (args.suite == "implicit") {
         return run_implicit_bench(args);
     }
+    if (args.suite == "render") {
+        RenderBenchArgs render_args;
+        render_args.data_dir = args.data_dir;
+        render_args.cases = args.cases;
+        render_args.methods = args.methods;
+        render_args.size = args.size;
+        render_args.threads = args.threads;
+        render_args.min_seconds = args.min_seconds;
+        render_args.csv = args.csv;
+        render_args.surf = args.surf;
+        return run_render_bench(render_args);
+    }
     if (args.suite != "groebner") {
         throw CommandFailure(exit_input, "bench: unknown suite '" + args.suite +
-                                             "' (available: groebner, implicit)");
+                                             "' (available: groebner, implicit, render)");
     }
     const std::vector<std::string> cases = suite_cases(args, args.data_dir);
     const bool with_singular = args.singular != "off" && on_path(args.singular);
@@ -316,8 +333,8 @@ int run_bench(const BenchArgs& args) {
 
 void add_bench_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* cmd = app.add_subcommand("bench", "Benchmark suites (groebner, implicit)");
-    cmd->add_option("suite", args->suite, "the suite: groebner | implicit")->required();
+    CLI::App* cmd = app.add_subcommand("bench", "Benchmark suites (groebner, implicit, render)");
+    cmd->add_option("suite", args->suite, "the suite: groebner | implicit | render")->required();
     cmd->add_flag("--csv", args->csv, "write CSV rows instead of a table");
     cmd->add_option("--data", args->data_dir, "folder with SUITE.txt and the .ideal files");
     cmd->add_option("--cases", args->cases, "run only these cases")->delimiter(',');
@@ -327,6 +344,12 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                     "repeat each case until this much time has passed (at most 20 runs)");
     cmd->add_option("--limit", args->limit_seconds,
                     "implicit suite: give Gröbner and Singular at most this many seconds");
+    cmd->add_option("--size", args->size, "render suite: N×N primary rays per surface (128)");
+    cmd->add_option("--threads", args->threads, "render suite: worker threads (1)");
+    cmd->add_option("--methods", args->methods, "render suite: only these trace methods")
+        ->delimiter(',');
+    cmd->add_option("--surf", args->surf,
+                    "render suite: surf executable for the same-run reference, or 'off'");
     cmd->callback([args, &exit_code] { exit_code = run_bench(*args); });
 }
 

@@ -11,5 +11,7 @@ void add_ideal_command(CLI::App& app, int& exit_code);
 void add_implicitize_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_demo_command(CLI::App& app, int& exit_code);
+void add_render_command(CLI::App& app, int& exit_code);
+void add_trace_command(CLI::App& app, int& exit_code);
 
 }  // namespace locus::cli

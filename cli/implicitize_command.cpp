@@ -55,30 +55,13 @@ int run_implicitize(const ImplicitizeArgs& args) {
     algebra::GroebnerOptions options;
     options.deadline = deadline_after(args.timeout_seconds);
     options.progress = terminal_progress("implicitize");
-    // auto: Gröbner elimination first, for at most 0.2 s — it finishes every classic case in a
-    // few milliseconds, where the resultant route takes up to 15 ms (Enneper) — then, for plane
-    // curves and surfaces, resultants: a cubic Bézier triangle takes 2.5 s that way and over
-    // 30 s by elimination. Space curves and degenerate maps (the resultant vanishes or no factor
-    // fits) go back to Gröbner elimination under the full --timeout.
-    const std::size_t num_params = map.parameter_ring->num_vars();
-    const bool resultant_applies = (num_params == 1 && map.coordinates.size() == 2) ||
-                                   (num_params == 2 && map.coordinates.size() == 3);
     std::optional<implicit::ImplicitResult> found;
-    if (args.method == "auto" && resultant_applies) {
-        algebra::GroebnerOptions quick = options;
-        const auto short_deadline = *deadline_after(0.2);
-        quick.deadline =
-            options.deadline ? std::min(*options.deadline, short_deadline) : short_deadline;
-        try {
-            found = implicit::implicitize(map, quick);
-        } catch (const Timeout&) {
-            try {
-                found = implicit::implicitize_by_resultant(map);
-            } catch (const InputError&) {
-                throw;
-            } catch (const Error& e) {
-                std::fprintf(stderr, "resultant route gave up (%s); back to groebner\n", e.what());
-            }
+    if (args.method == "auto") {
+        std::string fallback_reason;
+        found = implicit::implicitize_auto(map, options, &fallback_reason);
+        if (!fallback_reason.empty()) {
+            std::fprintf(stderr, "resultant route gave up (%s); back to groebner\n",
+                         fallback_reason.c_str());
         }
     } else if (args.method == "resultant") {
         found = implicit::implicitize_by_resultant(map);

@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     add_implicitize_command(app, exit_code);
     add_bench_command(app, exit_code);
     add_demo_command(app, exit_code);
+    add_render_command(app, exit_code);
+    add_trace_command(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -15,6 +15,13 @@ endif()
 pkg_check_modules(GMP REQUIRED IMPORTED_TARGET gmp)
 target_link_libraries(locus_flint INTERFACE PkgConfig::GMP)
 find_package(CLI11 CONFIG REQUIRED)
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(glm CONFIG REQUIRED)
+find_package(TBB CONFIG REQUIRED)
+# Debian's OpenImageIOConfig.cmake names /usr/include/opencv4 even without OpenCV installed,
+# which CMake rejects; the pkg-config file is accurate.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+find_package(tomlplusplus CONFIG REQUIRED)
 if(LOCUS_BUILD_TESTS)
     find_package(GTest REQUIRED)
     include(GoogleTest)

@@ -251,4 +251,32 @@ std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t n
     return "";
 }
 
+ImplicitResult implicitize_auto(const Parametrization& map, const algebra::GroebnerOptions& options,
+                                std::string* fallback_reason) {
+    const std::size_t num_params = map.parameter_ring->num_vars();
+    const bool resultant_applies = (num_params == 1 && map.coordinates.size() == 2) ||
+                                   (num_params == 2 && map.coordinates.size() == 3);
+    if (resultant_applies) {
+        algebra::GroebnerOptions quick = options;
+        const auto short_deadline =
+            std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+        quick.deadline =
+            options.deadline ? std::min(*options.deadline, short_deadline) : short_deadline;
+        try {
+            return implicitize(map, quick);
+        } catch (const Timeout&) {
+            try {
+                return implicitize_by_resultant(map);
+            } catch (const InputError&) {
+                throw;
+            } catch (const Error& e) {
+                if (fallback_reason != nullptr) {
+                    *fallback_reason = e.what();
+                }
+            }
+        }
+    }
+    return implicitize(map, options);
+}
+
 }  // namespace locus::implicit

@@ -1,0 +1,86 @@
+// The compile step from exact algebra to the renderer: a polynomial f(x, y, z) over Q becomes an
+// immutable, thread-safe CompiledPolynomial with double coefficients for fast evaluation of f and
+// its analytic gradient, while keeping the exact polynomial for what must stay exact (the
+// certified `exact` root finder).
+//
+// This is the only header of algebra/ that render/ includes (STYLE.md P3, P7). Compiling first
+// replaces f by its square-free part, computed exactly with FLINT, so that a non-reduced
+// equation such as (x²+y²+z²−1)² has simple roots along rays and renders like the sphere;
+// `made_square_free()` reports when that changed f. Variables are x, y, z by name; an equation
+// in a subset of them (a cylinder over a curve) is allowed.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace locus::algebra {
+
+class Polynomial;
+
+// The compiled form evaluates with fixed-size power tables; higher degrees are refused.
+inline constexpr int kMaxCompiledDegree = 40;
+
+using Point3 = std::array<double, 3>;
+
+// coefficient · x^ex · y^ey · z^ez, the coefficient rounded from the exact rational.
+struct CompiledTerm {
+    double coefficient;
+    int ex, ey, ez;
+};
+
+struct ValueGradient {
+    double value;
+    Point3 gradient;
+};
+
+struct ExactRoot {
+    enum class Status { hit, miss, identically_zero } status = Status::miss;
+    double t = 0.0;
+};
+
+class CompiledPolynomial {
+  public:
+    int degree() const { return degree_; }
+    std::span<const CompiledTerm> terms() const { return terms_; }
+    // The square-free equation in normalized form (DESIGN.md), e.g. "x^2+y^2+z^2-1".
+    const std::string& equation() const;
+    // True when compiling replaced the input by its square-free part.
+    bool made_square_free() const { return made_square_free_; }
+
+    double value(const Point3& p) const;
+    ValueGradient value_gradient(const Point3& p) const;
+
+  private:
+    struct Exact;
+    friend CompiledPolynomial compile_surface(const Polynomial& f);
+    friend ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
+                                      const Point3& direction, double lo, double hi, bool lo_open);
+    CompiledPolynomial(std::shared_ptr<const Exact> exact, bool made_square_free);
+
+    std::shared_ptr<const Exact> exact_;
+    std::vector<CompiledTerm> terms_;
+    int degree_ = 0;
+    bool made_square_free_ = false;
+};
+
+// Parses `equation` over the variables x, y, z (DESIGN.md "Polynomials"; errors carry the
+// column) and compiles it. Throws InputError for a zero or constant polynomial (it defines no
+// surface) and for a degree above kMaxCompiledDegree.
+CompiledPolynomial compile_surface(std::string_view equation);
+// The same for a polynomial whose variables are named among x, y, z (any ring order).
+CompiledPolynomial compile_surface(const Polynomial& f);
+
+// The certified first root of F(t) = f(o + t·d) with lo ≤ t ≤ hi, where o, d, lo, hi are read
+// exactly as the rationals their doubles denote. F is computed over Q, made square-free, and its
+// roots isolated by Descartes' rule with bisection (Collins–Akritas); the first one is refined
+// by exact bisection until its enclosure rounds to one or two adjacent doubles, so `t` is
+// within one ulp of the true root. Roots of every multiplicity count. With `lo_open`, a root at
+// exactly lo is skipped (`locus trace` asks for t > 0).
+ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
+                           const Point3& direction, double lo, double hi, bool lo_open = false);
+
+}  // namespace locus::algebra

@@ -1,0 +1,297 @@
+#include "algebra/real_roots.h"
+
+#include <flint/fmpq_poly.h>
+
+#include <cmath>
+#include <vector>
+
+namespace locus::algebra {
+
+void set_exact_double(fmpq_t out, double v) {
+    int exponent = 0;
+    const double mantissa = std::frexp(v, &exponent);
+    fmpz_set_d(fmpq_numref(out), std::ldexp(mantissa, 53));  // an integer, exactly
+    fmpz_one(fmpq_denref(out));
+    const int shift = exponent - 53;
+    if (shift >= 0) {
+        fmpq_mul_2exp(out, out, static_cast<ulong>(shift));
+    } else {
+        fmpq_div_2exp(out, out, static_cast<ulong>(-shift));
+    }
+}
+
+namespace {
+
+// RAII holders for the FLINT values used below.
+struct IntPoly {
+    fmpz_poly_t p;
+    IntPoly() { fmpz_poly_init(p); }
+    IntPoly(const IntPoly& o) {
+        fmpz_poly_init(p);
+        fmpz_poly_set(p, o.p);
+    }
+    IntPoly& operator=(const IntPoly&) = delete;
+    ~IntPoly() { fmpz_poly_clear(p); }
+};
+struct Q {
+    fmpq_t v;
+    Q() { fmpq_init(v); }
+    Q(const Q&) = delete;
+    Q& operator=(const Q&) = delete;
+    ~Q() { fmpq_clear(v); }
+};
+
+int sign_variations(const fmpz_poly_t p) {
+    int variations = 0;
+    int last = 0;
+    for (slong i = 0; i < fmpz_poly_length(p); ++i) {
+        const int s = fmpz_sgn(p->coeffs + i);
+        if (s != 0) {
+            if (last != 0 && s != last) {
+                ++variations;
+            }
+            last = s;
+        }
+    }
+    return variations;
+}
+
+// Descartes' bound on the roots of p in the open interval (0, 1): the sign variations of
+// (x+1)^n · p(1/(x+1)).
+int roots_in_unit_interval_bound(const fmpz_poly_t p) {
+    const slong n = fmpz_poly_degree(p);
+    IntPoly r;
+    fmpz_poly_reverse(r.p, p, n + 1);
+    fmpz_t one;
+    fmpz_init_set_ui(one, 1);
+    fmpz_poly_taylor_shift(r.p, r.p, one);
+    fmpz_clear(one);
+    return sign_variations(r.p);
+}
+
+// 2^n · p(x/2), made primitive: the left half of the current piece mapped to (0, 1).
+void left_half(fmpz_poly_t out, const fmpz_poly_t p) {
+    const slong n = fmpz_poly_degree(p);
+    fmpz_poly_set(out, p);
+    for (slong i = 0; i <= n; ++i) {
+        fmpz_mul_2exp(out->coeffs + i, out->coeffs + i, static_cast<ulong>(n - i));
+    }
+    fmpz_poly_primitive_part(out, out);
+}
+
+bool is_root_at_one(const fmpz_poly_t p) {
+    fmpz_t sum;
+    fmpz_init(sum);
+    for (slong i = 0; i < fmpz_poly_length(p); ++i) {
+        fmpz_add(sum, sum, p->coeffs + i);
+    }
+    const bool zero = fmpz_is_zero(sum);
+    fmpz_clear(sum);
+    return zero;
+}
+
+// A piece [c/2^k, (c+1)/2^k] of the s-axis, with `poly` = the polynomial on it mapped to (0, 1);
+// or, when `midpoint_marker`, the point (2c+1)/2^(k+1) to report if it is a root.
+struct Piece {
+    IntPoly poly;
+    fmpz_t c;
+    ulong k = 0;
+    bool midpoint_root = false;
+    Piece() { fmpz_init(c); }
+    Piece(const Piece& o) : poly(o.poly), k(o.k), midpoint_root(o.midpoint_root) {
+        fmpz_init_set(c, o.c);
+    }
+    Piece& operator=(const Piece&) = delete;
+    ~Piece() { fmpz_clear(c); }
+};
+
+// t = lo + (hi − lo)·s.
+void t_from_s(fmpq_t t, const fmpq_t s, const fmpq_t lo, const fmpq_t width) {
+    fmpq_mul(t, s, width);
+    fmpq_add(t, t, lo);
+}
+
+// s = (c + x) / 2^k.
+void s_from_piece(fmpq_t s, const fmpz_t c, ulong k, const fmpq_t x) {
+    fmpq_add_fmpz(s, x, c);
+    fmpq_div_2exp(s, s, k);
+}
+
+// The double nearest to t (fmpq_get_d alone may round either way).
+double to_double(const fmpq_t t) {
+    const double guess = fmpq_get_d(t);
+    double best = guess;
+    fmpq_t candidate, distance, best_distance;
+    fmpq_init(candidate);
+    fmpq_init(distance);
+    fmpq_init(best_distance);
+    set_exact_double(candidate, guess);
+    fmpq_sub(best_distance, candidate, t);
+    fmpq_abs(best_distance, best_distance);
+    for (const double other : {std::nextafter(guess, -INFINITY), std::nextafter(guess, INFINITY)}) {
+        if (!std::isfinite(other)) {
+            continue;
+        }
+        set_exact_double(candidate, other);
+        fmpq_sub(distance, candidate, t);
+        fmpq_abs(distance, distance);
+        if (fmpq_cmp(distance, best_distance) < 0) {
+            fmpq_swap(distance, best_distance);
+            best = other;
+        }
+    }
+    fmpq_clear(candidate);
+    fmpq_clear(distance);
+    fmpq_clear(best_distance);
+    return best;
+}
+
+// Refines the single root of `poly` in (0, 1) (a sign change) by exact bisection until its
+// enclosure in t rounds to one or two adjacent doubles.
+double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
+              const fmpq_t width) {
+    Q a, b, mid, value, s, t_lower, t_upper;
+    fmpq_zero(a.v);
+    fmpq_one(b.v);
+    fmpz_poly_evaluate_fmpq(value.v, poly, a.v);
+    const int sign_at_a = fmpq_sgn(value.v);
+    for (int iteration = 0; iteration < 4000; ++iteration) {
+        s_from_piece(s.v, c, k, a.v);
+        t_from_s(t_lower.v, s.v, lo, width);
+        s_from_piece(s.v, c, k, b.v);
+        t_from_s(t_upper.v, s.v, lo, width);
+        const double lower = to_double(t_lower.v);
+        const double upper = to_double(t_upper.v);
+        // Done when both ends round to the same double, or (a root on a rounding boundary)
+        // when the enclosure is far below one ulp.
+        fmpq_sub(mid.v, t_upper.v, t_lower.v);
+        const double gap = std::nextafter(std::abs(lower), INFINITY) - std::abs(lower);
+        if (lower == upper || std::abs(fmpq_get_d(mid.v)) < gap / 256) {
+            fmpq_add(mid.v, t_lower.v, t_upper.v);
+            fmpq_div_2exp(mid.v, mid.v, 1);
+            return to_double(mid.v);
+        }
+        fmpq_add(mid.v, a.v, b.v);
+        fmpq_div_2exp(mid.v, mid.v, 1);
+        fmpz_poly_evaluate_fmpq(value.v, poly, mid.v);
+        const int sign_at_mid = fmpq_sgn(value.v);
+        if (sign_at_mid == 0) {
+            s_from_piece(s.v, c, k, mid.v);
+            t_from_s(t_lower.v, s.v, lo, width);
+            return to_double(t_lower.v);
+        }
+        if (sign_at_mid == sign_at_a) {
+            fmpq_set(a.v, mid.v);
+        } else {
+            fmpq_set(b.v, mid.v);
+        }
+    }
+    // Unreachable for finite doubles: each step halves the enclosure, and 4000 halvings take
+    // any interval of doubles below one ulp.
+    s_from_piece(s.v, c, k, a.v);
+    t_from_s(t_lower.v, s.v, lo, width);
+    return to_double(t_lower.v);
+}
+
+}  // namespace
+
+std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, const fmpq_t hi,
+                                      bool lo_open) {
+    Q width;
+    fmpq_sub(width.v, hi, lo);
+    // q(s) = p(lo + width·s): the interval becomes [0, 1].
+    fmpq_poly_t pq, line, composed;
+    fmpq_poly_init(pq);
+    fmpq_poly_init(line);
+    fmpq_poly_init(composed);
+    fmpq_poly_set_fmpz_poly(pq, p);
+    fmpq_poly_set_coeff_fmpq(line, 0, lo);
+    fmpq_poly_set_coeff_fmpq(line, 1, width.v);
+    fmpq_poly_compose(composed, pq, line);
+    IntPoly q;
+    fmpq_poly_get_numerator(q.p, composed);
+    fmpq_poly_clear(pq);
+    fmpq_poly_clear(line);
+    fmpq_poly_clear(composed);
+    fmpz_poly_primitive_part(q.p, q.p);
+
+    if (fmpz_poly_degree(q.p) <= 0) {
+        return std::nullopt;  // a non-zero constant
+    }
+    if (fmpz_is_zero(q.p->coeffs)) {
+        if (!lo_open) {
+            return to_double(lo);
+        }
+        fmpz_poly_shift_right(q.p, q.p, 1);  // square-free: the root at lo is simple
+    }
+
+    std::vector<Piece> stack(1);
+    fmpz_poly_set(stack[0].poly.p, q.p);
+    while (!stack.empty()) {
+        Piece piece(stack.back());
+        stack.pop_back();
+        if (piece.midpoint_root) {
+            Q s, t;
+            fmpz_t numerator, denominator;
+            fmpz_init(numerator);
+            fmpz_init(denominator);
+            fmpz_mul_2exp(numerator, piece.c, 1);
+            fmpz_add_ui(numerator, numerator, 1);
+            fmpz_one(denominator);
+            fmpz_mul_2exp(denominator, denominator, piece.k + 1);
+            fmpq_set_fmpz_frac(s.v, numerator, denominator);
+            fmpz_clear(numerator);
+            fmpz_clear(denominator);
+            t_from_s(t.v, s.v, lo, width.v);
+            return to_double(t.v);
+        }
+        if (fmpz_poly_degree(piece.poly.p) <= 0) {
+            continue;
+        }
+        const int bound = roots_in_unit_interval_bound(piece.poly.p);
+        if (bound == 0) {
+            continue;
+        }
+        if (bound == 1) {
+            return refine(piece.poly.p, piece.c, piece.k, lo, width.v);
+        }
+        // Split at the midpoint; push right, the midpoint (if a root), then left, so that the
+        // left piece is examined first.
+        Piece left, right;
+        left_half(left.poly.p, piece.poly.p);
+        fmpz_mul_2exp(left.c, piece.c, 1);
+        left.k = piece.k + 1;
+        fmpz_t one;
+        fmpz_init_set_ui(one, 1);
+        fmpz_poly_taylor_shift(right.poly.p, left.poly.p, one);
+        fmpz_clear(one);
+        fmpz_add_ui(right.c, left.c, 1);
+        right.k = left.k;
+        const bool midpoint_is_root = is_root_at_one(left.poly.p);
+        if (midpoint_is_root) {
+            fmpz_poly_shift_right(right.poly.p, right.poly.p, 1);  // drop the root at x = 0
+        }
+        stack.push_back(right);
+        if (midpoint_is_root) {
+            Piece marker;
+            fmpz_set(marker.c, piece.c);
+            marker.k = piece.k;
+            marker.midpoint_root = true;
+            stack.push_back(marker);
+        }
+        stack.push_back(left);
+    }
+    fmpz_t sum;
+    fmpz_init(sum);
+    for (slong i = 0; i < fmpz_poly_length(q.p); ++i) {
+        fmpz_add(sum, sum, q.p->coeffs + i);
+    }
+    const bool root_at_hi = fmpz_is_zero(sum);
+    fmpz_clear(sum);
+    if (root_at_hi) {
+        return to_double(hi);
+    }
+    return std::nullopt;
+}
+
+}  // namespace locus::algebra

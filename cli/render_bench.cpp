@@ -1,0 +1,229 @@
+// `locus bench render [--csv] [--size N] [--methods a,b] [--cases a,b] [--threads T]`
+//
+// For each suite surface: the primary rays through the pixel centres of an N×N image (default
+// camera framing the clip sphere), first hits only, no shading. `exact` is traced once as the
+// reference; every method is then timed (repeated until --min-seconds have passed, mean run,
+// per-frame family expansion included) and compared with it ray by ray. A ray is wrong when
+// hit/miss disagrees with `exact`, when the method could not decide, or when the hit distance
+// differs by more than 1e-6 × the clip radius. When surf (Debian's surf-alggeo) is installed,
+// it draws the same surface at the same size in the same run (its own camera and clipping,
+// start-up excluded) for a speed reference.
+#include "cli/render_bench.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "algebra/error.h"
+#include "cli/command_support.h"
+#include "cli/exit_codes.h"
+#include "render/primary_rays.h"
+#include "render/scene.h"
+
+namespace locus::cli {
+namespace {
+
+struct SuiteSurface {
+    std::string name, equation;
+    double clip_radius = 2.0;
+};
+
+std::vector<SuiteSurface> read_suite(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) {
+        throw CommandFailure(exit_input, path + ": cannot open the surface suite");
+    }
+    std::vector<SuiteSurface> suite;
+    std::string line;
+    auto trim = [](std::string s) {
+        const auto b = s.find_first_not_of(" \t");
+        const auto e = s.find_last_not_of(" \t\r");
+        return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+    };
+    std::size_t number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        if (trim(line).empty() || trim(line)[0] == '#') {
+            continue;
+        }
+        std::stringstream fields(line);
+        std::string name, equation, radius;
+        std::getline(fields, name, '|');
+        std::getline(fields, equation, '|');
+        std::getline(fields, radius, '|');
+        try {
+            suite.push_back({trim(name), trim(equation), std::stod(trim(radius))});
+        } catch (const std::exception&) {
+            throw CommandFailure(exit_input, path + ": line " + std::to_string(number) +
+                                                 ": expected name | equation | clip radius");
+        }
+    }
+    return suite;
+}
+
+std::string surf_equation(const std::string& equation) {
+    // surf reads the same infix syntax; only the decimal fractions need no change.
+    return equation;
+}
+
+// Seconds surf takes to draw the surface at size×size (start-up measured with an empty script
+// and subtracted), or a negative value when surf is missing or fails.
+double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const std::string stem = "locus-surf-" + std::to_string(::getpid());
+    const auto image = dir / (stem + ".ppm");
+    auto run = [&](bool draw) {
+        const auto script = dir / (stem + ".pic");
+        {
+            std::ofstream out(script);
+            // surf's view spans about ±10/scale world units and its clip radius is in those
+            // screen units: this frames the clip sphere as locus' default camera does.
+            const double scale = 0.1126 * s.clip_radius;
+            out << "width = " << size << ";\nheight = " << size << ";\n"
+                << "clip = sphere;\nradius = " << s.clip_radius / scale << ";\n"
+                << "scale_x = " << scale << ";\nscale_y = " << scale << ";\nscale_z = " << scale
+                << ";\n"
+                << "surface = " << surf_equation(s.equation) << ";\n";
+            if (draw) {
+                out << "clear_screen;\ndraw_surface;\nfilename = \"" << image.string()
+                    << "\";\ncolor_file_format = ppm;\nsave_color_image;\n";
+            }
+        }
+        const std::string command =
+            "timeout 120 " + surf + " -n " + script.string() + " >/dev/null 2>&1";
+        const auto start = std::chrono::steady_clock::now();
+        const int status = std::system(command.c_str());
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::filesystem::remove(script);
+        return status == 0 ? seconds : -1.0;
+    };
+    const double startup = run(false);
+    const double total = run(true);
+    const bool drew = std::filesystem::exists(image);
+    std::filesystem::remove(image);
+    if (startup < 0 || total < 0 || !drew) {
+        return -1.0;
+    }
+    return std::max(total - startup, 1e-6);
+}
+
+bool on_path(const std::string& program) {
+    const std::string command = "command -v " + program + " >/dev/null 2>&1";
+    return std::system(command.c_str()) == 0;
+}
+
+}  // namespace
+
+int run_render_bench(const RenderBenchArgs& args) {
+    std::vector<SuiteSurface> suite = read_suite(args.data_dir + "/surfaces/SUITE.txt");
+    if (!args.cases.empty()) {
+        std::vector<SuiteSurface> chosen;
+        for (const std::string& name : args.cases) {
+            const auto it = std::find_if(suite.begin(), suite.end(),
+                                         [&](const SuiteSurface& s) { return s.name == name; });
+            if (it == suite.end()) {
+                throw CommandFailure(exit_input,
+                                     "bench render: no surface '" + name + "' in the suite");
+            }
+            chosen.push_back(*it);
+        }
+        suite = chosen;
+    }
+    std::vector<render::TraceMethod> methods;
+    for (const std::string& name : args.methods) {
+        methods.push_back(render::parse_trace_method(name));
+    }
+    if (methods.empty()) {
+        for (render::TraceMethod m : render::all_trace_methods()) {
+            if (m != render::TraceMethod::exact) {
+                methods.push_back(m);
+            }
+        }
+    }
+    const bool with_surf = args.surf != "off" && on_path(args.surf);
+    if (args.csv) {
+        std::cout << "case,degree,method,rays,seconds,rays_per_second,work_per_ray,wrong_rays,"
+                     "wrong_share,unknown_rays,max_depth_error,mean_depth_error,surf_seconds\n";
+    } else {
+        std::printf("%-18s %3s %-17s %10s %9s %8s %8s %11s %11s %9s\n", "case", "deg", "method",
+                    "rays/s", "work/ray", "wrong", "wrong %", "max err", "mean err", "surf s");
+    }
+    for (const SuiteSurface& s : suite) {
+        const algebra::CompiledPolynomial f = algebra::compile_surface(s.equation);
+        render::Scene scene;
+        scene.width = scene.height = args.size;
+        scene.surfaces.push_back(
+            {s.equation, "", render::ClipSphere{{0, 0, 0}, s.clip_radius}, {}});
+        const render::Camera camera(render::default_camera(scene), args.size, args.size);
+        const render::ClipRegion region = scene.surfaces[0].clip;
+        const render::PrimaryRays reference = render::trace_primary_rays(
+            f, region, camera, args.size, args.size, render::TraceMethod::exact, 0);
+        const double surf_seconds = with_surf ? time_surf(args.surf, s, args.size) : -1.0;
+        const double tolerance = 1e-6 * s.clip_radius;
+        for (render::TraceMethod method : methods) {
+            render::PrimaryRays traced;
+            double total = 0.0;
+            int runs = 0;
+            do {
+                traced = render::trace_primary_rays(f, region, camera, args.size, args.size, method,
+                                                    args.threads);
+                total += traced.seconds;
+                ++runs;
+            } while (total < args.min_seconds && runs < 50);
+            const double seconds = total / runs;
+            long wrong = 0, unknown = 0, work = 0, compared = 0;
+            double max_error = 0.0, sum_error = 0.0;
+            for (std::size_t p = 0; p < traced.hits.size(); ++p) {
+                const render::RootResult& mine = traced.hits[p];
+                const render::RootResult& truth = reference.hits[p];
+                work += mine.work;
+                if (mine.status == render::RootStatus::unknown) {
+                    ++unknown;
+                    ++wrong;
+                    continue;
+                }
+                if (mine.status != truth.status) {
+                    ++wrong;
+                    continue;
+                }
+                if (mine.status == render::RootStatus::hit) {
+                    const double error = std::abs(mine.t - truth.t) * traced.ray_lengths[p];
+                    max_error = std::max(max_error, error);
+                    sum_error += error;
+                    ++compared;
+                    if (error > tolerance) {
+                        ++wrong;
+                    }
+                }
+            }
+            const double rays = static_cast<double>(traced.hits.size());
+            const double mean_error = compared > 0 ? sum_error / compared : 0.0;
+            if (args.csv) {
+                std::cout << s.name << "," << f.degree() << "," << render::to_string(method) << ","
+                          << traced.hits.size() << "," << seconds << "," << rays / seconds << ","
+                          << work / rays << "," << wrong << "," << wrong / rays << "," << unknown
+                          << "," << max_error << "," << mean_error << "," << surf_seconds << "\n";
+            } else {
+                std::printf(
+                    "%-18s %3d %-17s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %9s\n", s.name.c_str(),
+                    f.degree(), std::string(render::to_string(method)).c_str(), rays / seconds,
+                    work / rays, wrong, 100.0 * wrong / rays, max_error, mean_error,
+                    surf_seconds > 0 ? std::to_string(surf_seconds).substr(0, 6).c_str() : "-");
+            }
+            std::cout.flush();
+        }
+    }
+    if (!with_surf && args.surf != "off") {
+        std::fprintf(stderr, "surf not found: no surf column (install Debian's surf-alggeo)\n");
+    }
+    return exit_ok;
+}
+
+}  // namespace locus::cli

@@ -1,0 +1,220 @@
+// `locus render EQUATION|SCENE.toml|--param FILE -o out.png [flags]`: ray-trace algebraic
+// surfaces. Flags override the scene file and the defaults (render/scene.h); their names are
+// the interface benchmarks and comparisons with other renderers rely on.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "algebra/error.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/surface_input.h"
+#include "render/image_output.h"
+#include "render/renderer.h"
+#include "render/scene_file.h"
+
+namespace locus::cli {
+namespace {
+
+struct RenderArgs {
+    std::string input;  // an equation, or a scene file ending in .toml
+    std::string param;
+    std::string output = "render.png";
+    std::string size, eye, target, up, background, shadows, ao;
+    std::optional<double> fov, clip_radius;
+    std::string method;
+    int samples = 0;
+    int threads = -1;
+    std::vector<std::string> aovs;
+};
+
+[[noreturn]] void bad_flag(const std::string& flag, const std::string& value,
+                           const std::string& expected) {
+    throw CommandFailure(exit_input, flag + " '" + value + "': expected " + expected);
+}
+
+render::Vec3 parse_triple(const std::string& flag, const std::string& text) {
+    std::istringstream in(text);
+    render::Vec3 v;
+    char comma1 = 0, comma2 = 0;
+    in >> v.x >> comma1 >> v.y >> comma2 >> v.z;
+    if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() || !std::isfinite(v.x) ||
+        !std::isfinite(v.y) || !std::isfinite(v.z)) {
+        bad_flag(flag, text, "three numbers X,Y,Z");
+    }
+    return v;
+}
+
+bool parse_on_off(const std::string& flag, const std::string& text) {
+    if (text == "on") {
+        return true;
+    }
+    if (text != "off") {
+        bad_flag(flag, text, "on or off");
+    }
+    return false;
+}
+
+void apply_flags(const RenderArgs& args, render::Scene& scene) {
+    if (!args.size.empty()) {
+        std::istringstream in(args.size);
+        int width = 0, height = 0;
+        char times = 0;
+        in >> width >> times >> height;
+        if (!in || times != 'x' || !(in >> std::ws).eof() || width < 1 || height < 1 ||
+            width > 16384 || height > 16384) {
+            bad_flag("--size", args.size, "WIDTHxHEIGHT, each from 1 to 16384");
+        }
+        scene.width = width;
+        scene.height = height;
+    }
+    if (args.clip_radius) {
+        if (!(*args.clip_radius > 0.0) || !std::isfinite(*args.clip_radius)) {
+            bad_flag("--clip-radius", std::to_string(*args.clip_radius), "a positive radius");
+        }
+        for (render::Surface& surface : scene.surfaces) {
+            surface.clip = render::ClipSphere{{0.0, 0.0, 0.0}, *args.clip_radius};
+        }
+    }
+    if (!args.eye.empty() || !args.target.empty() || !args.up.empty() || args.fov) {
+        render::CameraSpec camera = scene.camera.value_or(render::default_camera(scene));
+        if (!args.eye.empty()) {
+            camera.eye = parse_triple("--eye", args.eye);
+        }
+        if (!args.target.empty()) {
+            camera.target = parse_triple("--target", args.target);
+        }
+        if (!args.up.empty()) {
+            camera.up = parse_triple("--up", args.up);
+        }
+        if (args.fov) {
+            camera.fov_degrees = *args.fov;
+        }
+        scene.camera = camera;
+    }
+    if (!args.method.empty()) {
+        scene.options.method = render::parse_trace_method(args.method);
+    }
+    if (args.samples != 0) {
+        if (args.samples < 1 || args.samples > 16) {
+            bad_flag("--samples", std::to_string(args.samples), "N from 1 to 16 (N×N per pixel)");
+        }
+        scene.options.samples = args.samples;
+    }
+    if (!args.shadows.empty()) {
+        scene.options.shadows = parse_on_off("--shadows", args.shadows);
+    }
+    if (!args.ao.empty()) {
+        scene.options.ambient_occlusion = parse_on_off("--ao", args.ao);
+    }
+    if (!args.background.empty()) {
+        scene.background = parse_triple("--background", args.background);
+    }
+    if (args.threads >= 0) {
+        scene.options.threads = args.threads;
+    }
+}
+
+render::Scene build_scene(const RenderArgs& args) {
+    const bool is_scene_file =
+        args.input.size() > 5 && args.input.compare(args.input.size() - 5, 5, ".toml") == 0;
+    if (args.input.empty() == args.param.empty()) {
+        throw CommandFailure(exit_input,
+                             "render: give an equation, a scene file (.toml) or --param FILE");
+    }
+    render::Scene scene;
+    if (is_scene_file) {
+        try {
+            scene = render::parse_scene(read_input(args.input));
+        } catch (const Error& e) {
+            throw CommandFailure(exit_input, args.input + ": " + e.what());
+        }
+    } else {
+        render::Surface surface;
+        if (args.param.empty()) {
+            surface.equation = args.input;
+        } else {
+            surface.param_file = args.param;
+        }
+        scene.surfaces.push_back(surface);
+    }
+    apply_flags(args, scene);
+    return scene;
+}
+
+std::function<void(double)> terminal_fraction_progress() {
+    if (!isatty(STDERR_FILENO)) {
+        return {};
+    }
+    return [](double fraction) {
+        const int width = 40;
+        const int filled = static_cast<int>(fraction * width);
+        std::fprintf(stderr, "\rrender [%s%s] %3d%%", std::string(filled, '#').c_str(),
+                     std::string(width - filled, ' ').c_str(), static_cast<int>(100.0 * fraction));
+        std::fflush(stderr);
+    };
+}
+
+int run_render(const RenderArgs& args) {
+    render::Scene scene = build_scene(args);
+    std::vector<render::Aov> aovs;
+    for (const std::string& name : args.aovs) {
+        aovs.push_back(render::parse_aov(name));
+    }
+    const std::vector<algebra::CompiledPolynomial> compiled = compile_surfaces(scene);
+    render::ExecutionSettings execution;
+    execution.threads = scene.options.threads;
+    execution.progress = terminal_fraction_progress();
+    render::RenderStats stats;
+    const render::RenderedImage image = render::render(scene, compiled, execution, &stats);
+    if (execution.progress) {
+        std::fprintf(stderr, "\r\033[K");
+    }
+    const std::vector<std::string> written = render::write_image(image, args.output, aovs);
+    std::fprintf(stderr,
+                 "rendered %dx%d, %d×%d samples, method %s: %.3f s, %.2f M primary rays/s, "
+                 "%ld hits, %ld undecided rays\n",
+                 scene.width, scene.height, scene.options.samples, scene.options.samples,
+                 std::string(render::to_string(scene.options.method)).c_str(), stats.seconds,
+                 stats.primary_rays / stats.seconds * 1e-6, stats.hits, stats.unknown);
+    for (const std::string& path : written) {
+        std::fprintf(stderr, "wrote %s\n", path.c_str());
+    }
+    return exit_ok;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, int& exit_code) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* cmd = app.add_subcommand("render", "Ray-trace algebraic surfaces f(x,y,z) = 0");
+    cmd->add_option("input", args->input,
+                    "an equation such as \"x^2+y^2+z^2-1\", or a scene file ending in .toml");
+    cmd->add_option("--param", args->param,
+                    "render the implicit equation of this parametrization file");
+    cmd->add_option("-o,--output", args->output,
+                    "image file (PNG by default; .exr writes linear half floats)");
+    cmd->add_option("--size", args->size, "WIDTHxHEIGHT (default 512x512)");
+    cmd->add_option("--eye", args->eye, "camera position X,Y,Z");
+    cmd->add_option("--target", args->target, "point looked at X,Y,Z");
+    cmd->add_option("--up", args->up, "up direction X,Y,Z");
+    cmd->add_option("--fov", args->fov, "vertical field of view in degrees (default 35)");
+    cmd->add_option("--clip-radius", args->clip_radius,
+                    "clip every surface to a sphere of this radius about the origin (default 2)");
+    cmd->add_option("--method", args->method,
+                    "sturm (default) | bernstein | laguerre | eigen | sphere-gradient | "
+                    "sphere-lipschitz | exact");
+    cmd->add_option("--samples", args->samples, "N: N×N samples per pixel (default 1)");
+    cmd->add_option("--shadows", args->shadows, "on (default) | off");
+    cmd->add_option("--ao", args->ao, "ambient occlusion: on | off (default)");
+    cmd->add_option("--background", args->background, "background colour R,G,B (linear, 0..1)");
+    cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
+    cmd->add_option("--aov", args->aovs, "also write depth | normal | work as <stem>.<aov>.exr")
+        ->delimiter(',');
+    cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
+}
+
+}  // namespace locus::cli

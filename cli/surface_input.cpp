@@ -1,0 +1,67 @@
+#include "cli/surface_input.h"
+
+#include <cstdio>
+
+#include "algebra/error.h"
+#include "algebra/print.h"
+#include "cli/command_support.h"
+#include "cli/exit_codes.h"
+#include "implicit/implicitize.h"
+
+namespace locus::cli {
+
+std::string implicit_equation_of(const std::string& param_path) {
+    const std::string text = read_input(param_path);
+    implicit::Parametrization map;
+    try {
+        map = implicit::parse_parametrization(text);
+    } catch (const Error& e) {
+        throw CommandFailure(exit_input, param_path + ": " + e.what());
+    }
+    if (map.coordinates.size() != 3 || map.parameter_ring->num_vars() != 2) {
+        throw CommandFailure(exit_input, param_path +
+                                             ": rendering needs a surface: two parameters and "
+                                             "coordinates x, y, z");
+    }
+    const implicit::ImplicitResult result = implicit::implicitize_auto(map);
+    if (!result.equation) {
+        throw CommandFailure(exit_input, param_path + ": " +
+                                             implicit::describe_image(result.image, 2, 3) +
+                                             "; there is no single equation to render");
+    }
+    if (!implicit::vanishes_on(*result.equation, map)) {
+        throw CommandFailure(exit_check_failed,
+                             param_path +
+                                 ": verification FAILED: the implicit equation does "
+                                 "not vanish on the parametrization");
+    }
+    const std::string equation = algebra::to_string(*result.equation);
+    std::fprintf(stderr, "%s: implicit equation (%s, verified): %s\n", param_path.c_str(),
+                 result.method.c_str(), equation.c_str());
+    return equation;
+}
+
+std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene) {
+    std::vector<algebra::CompiledPolynomial> compiled;
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        render::Surface& surface = scene.surfaces[i];
+        const std::string name = "surface[" + std::to_string(i + 1) + "]";
+        if (!surface.param_file.empty()) {
+            surface.equation = implicit_equation_of(surface.param_file);
+        }
+        try {
+            compiled.push_back(algebra::compile_surface(surface.equation));
+        } catch (const Error& e) {
+            throw CommandFailure(exit_input, name + ".equation: " + e.what());
+        }
+        if (compiled.back().made_square_free()) {
+            std::fprintf(stderr,
+                         "%s: the equation has repeated factors; rendering its square-free "
+                         "part %s\n",
+                         name.c_str(), compiled.back().equation().c_str());
+        }
+    }
+    return compiled;
+}
+
+}  // namespace locus::cli

@@ -1,0 +1,24 @@
+// Turning what a user names as a surface (an equation, a .param file, a scene) into compiled
+// polynomials, shared by `locus render`, `locus trace` and `locus bench render`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "algebra/compiled.h"
+#include "render/scene.h"
+
+namespace locus::cli {
+
+// The implicit equation of the parametrization in `param_path` (implicitize --method auto),
+// verified by substitution; reports the route and the equation on standard error. Throws
+// CommandFailure: exit 2 for bad input or an image that is not a surface, 4 when verification
+// fails.
+std::string implicit_equation_of(const std::string& param_path);
+
+// Resolves `param` surfaces to equations, then compiles every surface; errors name the surface
+// (`surface[2].equation: line 1, column 5: ...`). Reports on standard error when an equation
+// was replaced by its square-free part.
+std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene);
+
+}  // namespace locus::cli

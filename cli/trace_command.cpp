@@ -1,0 +1,110 @@
+// `locus trace EQUATION [--method M] [--t-max T]`: the first hit along rays read from standard
+// input (DESIGN.md, "locus trace"), through the same SurfaceTracer as the renderer. Each input
+// line is `ox oy oz dx dy dz`; each output line is the smallest t > 0 with f(o + t·d) = 0 with
+// 17 significant digits, `miss`, or `unknown` when the method could not decide.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+#include "algebra/error.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "render/surface_tracer.h"
+
+namespace locus::cli {
+namespace {
+
+struct TraceArgs {
+    std::string equation;
+    std::string method = "sturm";
+    double t_max = 100.0;
+};
+
+int run_trace(const TraceArgs& args) {
+    const render::TraceMethod method = render::parse_trace_method(args.method);
+    if (!(args.t_max > 0.0) || !std::isfinite(args.t_max)) {
+        throw CommandFailure(exit_input, "--t-max: expected a positive number");
+    }
+    algebra::CompiledPolynomial f = [&] {
+        try {
+            return algebra::compile_surface(args.equation);
+        } catch (const Error& e) {
+            throw CommandFailure(exit_input, "equation: " + std::string(e.what()));
+        }
+    }();
+    if (f.made_square_free()) {
+        std::fprintf(stderr, "equation has repeated factors; tracing its square-free part %s\n",
+                     f.equation().c_str());
+    }
+    const render::SurfaceTracer tracer(f, method, 1.0);
+    std::string line;
+    std::size_t line_number = 0;
+    while (std::getline(std::cin, line)) {
+        ++line_number;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+            continue;
+        }
+        std::array<double, 6> values{};
+        const char* cursor = line.c_str();
+        for (std::size_t i = 0; i < 6; ++i) {
+            while (*cursor == ' ' || *cursor == '\t') {
+                ++cursor;
+            }
+            char* end = nullptr;
+            values[i] = std::strtod(cursor, &end);
+            if (end == cursor || !std::isfinite(values[i])) {
+                throw CommandFailure(exit_input,
+                                     "<stdin>: line " + std::to_string(line_number) + ", column " +
+                                         std::to_string(cursor - line.c_str() + 1) +
+                                         ": expected a decimal number (ray: ox oy oz dx dy dz)");
+            }
+            cursor = end;
+        }
+        while (*cursor == ' ' || *cursor == '\t' || *cursor == '\r') {
+            ++cursor;
+        }
+        if (*cursor != '\0') {
+            throw CommandFailure(exit_input, "<stdin>: line " + std::to_string(line_number) +
+                                                 ", column " +
+                                                 std::to_string(cursor - line.c_str() + 1) +
+                                                 ": expected the end of the line after six "
+                                                 "numbers");
+        }
+        const render::Ray ray{{values[0], values[1], values[2]}, {values[3], values[4], values[5]}};
+        if (ray.direction == render::Vec3(0.0)) {
+            throw CommandFailure(exit_input, "<stdin>: line " + std::to_string(line_number) +
+                                                 ": the direction is zero");
+        }
+        // t > 0: the smallest positive double is the first admissible parameter.
+        const render::Interval interval{std::numeric_limits<double>::denorm_min(), args.t_max};
+        const render::RootResult hit = tracer.first_hit(ray, interval);
+        if (hit.status == render::RootStatus::hit) {
+            std::printf("%.17g\n", hit.t);
+        } else if (hit.status == render::RootStatus::miss) {
+            std::printf("miss\n");
+        } else {
+            std::printf("unknown\n");
+        }
+    }
+    std::fflush(stdout);
+    return exit_ok;
+}
+
+}  // namespace
+
+void add_trace_command(CLI::App& app, int& exit_code) {
+    auto args = std::make_shared<TraceArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "trace", "First hit of rays (stdin: ox oy oz dx dy dz) with the surface f = 0");
+    cmd->add_option("equation", args->equation, "f(x, y, z)")->required();
+    cmd->add_option("--method", args->method,
+                    "sturm (default) | bernstein | laguerre | eigen | sphere-gradient | "
+                    "sphere-lipschitz | exact");
+    cmd->add_option("--t-max", args->t_max, "search t in (0, T] (default 100)");
+    cmd->callback([args, &exit_code] { exit_code = run_trace(*args); });
+}
+
+}  // namespace locus::cli

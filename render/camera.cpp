@@ -1,0 +1,44 @@
+#include "render/camera.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "algebra/error.h"
+
+namespace locus::render {
+
+namespace {
+std::string format_vec(const Vec3& v) {
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) +
+           ")";
+}
+}  // namespace
+
+Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
+    if (!(spec.fov_degrees > 0.0 && spec.fov_degrees < 180.0)) {
+        throw InputError("camera.fov " + std::to_string(spec.fov_degrees),
+                         "the vertical field of view must lie strictly between 0 and 180 "
+                         "degrees");
+    }
+    const Vec3 view = spec.target - spec.eye;
+    if (!(glm::length(view) > 0.0) || !std::isfinite(glm::length(view))) {
+        throw InputError("camera.eye " + format_vec(spec.eye),
+                         "the eye must differ from the target " + format_vec(spec.target));
+    }
+    forward_ = glm::normalize(view);
+    const Vec3 side = glm::cross(forward_, spec.up);
+    if (!(glm::length(side) > 1e-9 * glm::length(spec.up)) || !(glm::length(spec.up) > 0.0)) {
+        throw InputError("camera.up " + format_vec(spec.up),
+                         "the up vector must be non-zero and not parallel to the viewing "
+                         "direction");
+    }
+    const Vec3 right = glm::normalize(side);
+    const Vec3 true_up = glm::cross(right, forward_);
+    const double half_height = std::tan(spec.fov_degrees * std::numbers::pi / 360.0);
+    const double half_width = half_height * width / height;
+    per_column_ = (2.0 * half_width / width) * right;
+    per_row_ = (-2.0 * half_height / height) * true_up;
+    base_ = forward_ - half_width * right + half_height * true_up;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,63 @@
+#include "render/primary_rays.h"
+
+#include <chrono>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/ray_family.h"
+
+namespace locus::render {
+
+PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipRegion& region,
+                               const Camera& camera, int width, int height, TraceMethod method,
+                               int threads) {
+    const auto start = std::chrono::steady_clock::now();
+    PrimaryRays result;
+    const std::size_t pixels = static_cast<std::size_t>(width) * height;
+    result.hits.resize(pixels);
+    result.ray_lengths.resize(pixels);
+    const double scale = bounding_sphere(region).radius;
+    const SurfaceTracer tracer(f, method, scale);
+    const bool uses_family = method != TraceMethod::sphere_gradient && method != TraceMethod::exact;
+    const RayFamily family(f, camera, bounding_sphere(region).center, width);
+    auto trace_row = [&](int y) {
+        RowExpansion row;
+        const double image_y = y + 0.5;
+        if (uses_family) {
+            family.expand_row(image_y, row);
+        }
+        for (int x = 0; x < width; ++x) {
+            const double image_x = x + 0.5;
+            const Ray ray = camera.ray(image_x, image_y);
+            const std::size_t p = static_cast<std::size_t>(y) * width + x;
+            result.ray_lengths[p] = glm::length(ray.direction);
+            const Interval interval = clip(region, ray, {0.0, INFINITY});
+            if (interval.is_empty()) {
+                result.hits[p] = {};
+                continue;
+            }
+            RayPolynomial restriction;
+            if (uses_family) {
+                restriction = RayFamily::restriction(row, image_x);
+            }
+            result.hits[p] = tracer.first_hit(ray, interval, uses_family ? &restriction : nullptr,
+                                              family.origin_t());
+        }
+    };
+    tbb::task_arena arena(threads > 0 ? threads : tbb::this_task_arena::max_concurrency());
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, height, 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              for (int y = range.begin(); y < range.end(); ++y) {
+                                  trace_row(y);
+                              }
+                          });
+    });
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,58 @@
+// The primary rays of one frame, restricted to a surface all at once (the row-coherent
+// substitution of SURFER/jsurf, recentred for accuracy).
+//
+// Every primary ray starts at the eye e with direction d(x, y) = base + x·U + y·V
+// (render/camera.h), and d·w = 1 for the viewing direction w. So the ray meets the plane
+// through the clip centre c perpendicular to w at the same parameter D = (c − e)·w for every
+// pixel, at q(x, y) = e + D·d(x, y), which is affine in (x, y) too. The family is expanded about
+// that plane, t = D + s:
+//     F(t) = f(q + s·d) = Σ_k H_k(x, y) s^k,
+// where along one image row H_k is a polynomial in x of degree ≤ n = deg f. Expanding about
+// the eye instead (F = Σ g_k(d) t^k with g = f(e + ·)) costs fewer operations but cancels
+// catastrophically: at degree 12 with the eye 4 clip radii away the terms reach 1e13 around
+// roots of size 1, and half of the rays came out wrong. About the plane, the terms have the
+// size of f inside the clip region.
+//
+// Per row, F is restricted along n + 1 rays at Chebyshev nodes of the row, and each H_k is
+// interpolated there (exact for degree ≤ n) and stored in powers of u = (x − centre)/half-width
+// ∈ [−1, 1]. A pixel then costs (n + 1)² multiply-adds (169 at degree 12), no expansion.
+#pragma once
+
+#include <vector>
+
+#include "render/camera.h"
+#include "render/ray_restriction.h"
+
+namespace locus::render {
+
+// H_k coefficients for one image row: row[k][j] is the coefficient of u^j in H_k.
+struct RowExpansion {
+    int degree = -1;
+    double center_x = 0.0;
+    double inverse_half_width = 1.0;
+    std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> row;
+};
+
+class RayFamily {
+  public:
+    // `center`: a point the restriction is expanded about (the clip region's centre); `width`:
+    // the image width in pixels.
+    RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera, const Vec3& center,
+              int width);
+
+    // F(t) = restriction(t − origin_t()).
+    double origin_t() const { return plane_t_; }
+    // Expands the row at continuous image coordinate y.
+    void expand_row(double y, RowExpansion& out) const;
+    // The restriction of the primary ray at continuous coordinate x of an expanded row, in the
+    // variable s = t − origin_t().
+    static RayPolynomial restriction(const RowExpansion& row, double x);
+
+  private:
+    const Camera* camera_;
+    LineRestrictor restrictor_;
+    double plane_t_;
+    double center_x_, half_width_;
+};
+
+}  // namespace locus::render

@@ -1,0 +1,163 @@
+#include "render/renderer.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/ray_family.h"
+#include "render/shading.h"
+
+namespace locus::render {
+
+RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolynomial> surfaces,
+                     const ExecutionSettings& execution, RenderStats* stats) {
+    const auto start = std::chrono::steady_clock::now();
+    const Camera camera(scene.camera.value_or(default_camera(scene)), scene.width, scene.height);
+    const std::vector<Light> lights = scene.lights.empty() ? default_lights() : scene.lights;
+    double scale = 0.0;
+    for (const Surface& surface : scene.surfaces) {
+        scale = std::max(scale, bounding_sphere(surface.clip).radius);
+    }
+    std::vector<SurfaceTracer> tracers;
+    std::vector<RayFamily> families;
+    std::vector<ShadedSurface> shaded;
+    tracers.reserve(surfaces.size());
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        tracers.emplace_back(surfaces[i], scene.options.method, scale);
+        families.emplace_back(surfaces[i], camera, bounding_sphere(scene.surfaces[i].clip).center,
+                              scene.width);
+    }
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        shaded.push_back({&tracers[i], scene.surfaces[i].clip, scene.surfaces[i].material});
+    }
+    const Shader shader(shaded, lights, scene.options, scale);
+    const bool uses_family = scene.options.method != TraceMethod::sphere_gradient &&
+                             scene.options.method != TraceMethod::exact;
+
+    RenderedImage image;
+    image.width = scene.width;
+    image.height = scene.height;
+    const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
+    image.color.assign(3 * pixels, 0.0f);
+    image.depth.assign(pixels, INFINITY);
+    image.normal.assign(3 * pixels, 0.0f);
+    image.work.assign(pixels, 0.0f);
+
+    const int k = scene.options.samples;
+    std::atomic<long> hits{0}, unknown{0}, primary_work{0};
+    std::atomic<int> rows_done{0};
+    std::mutex progress_mutex;
+
+    auto render_row = [&](int y) {
+        std::vector<RowExpansion> rows(surfaces.size());
+        long row_hits = 0, row_unknown = 0, row_work = 0;
+        std::vector<Vec3> sums(static_cast<std::size_t>(scene.width), Vec3(0.0));
+        std::vector<double> nearest(static_cast<std::size_t>(scene.width), INFINITY);
+        std::vector<Vec3> normals(static_cast<std::size_t>(scene.width), Vec3(0.0));
+        std::vector<int> work(static_cast<std::size_t>(scene.width), 0);
+        for (int sy = 0; sy < k; ++sy) {
+            const double image_y = y + (sy + 0.5) / k;
+            if (uses_family) {
+                for (std::size_t s = 0; s < surfaces.size(); ++s) {
+                    families[s].expand_row(image_y, rows[s]);
+                }
+            }
+            for (int x = 0; x < scene.width; ++x) {
+                const auto column = static_cast<std::size_t>(x);
+                for (int sx = 0; sx < k; ++sx) {
+                    const double image_x = x + (sx + 0.5) / k;
+                    const Ray ray = camera.ray(image_x, image_y);
+                    double best_t = INFINITY;
+                    std::size_t best = 0;
+                    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+                        const Interval interval = clip(scene.surfaces[s].clip, ray, {0.0, best_t});
+                        if (interval.is_empty()) {
+                            continue;
+                        }
+                        RayPolynomial restriction;
+                        if (uses_family) {
+                            restriction = RayFamily::restriction(rows[s], image_x);
+                        }
+                        const RootResult hit = tracers[s].first_hit(
+                            ray, interval, uses_family ? &restriction : nullptr,
+                            families[s].origin_t());
+                        row_work += hit.work;
+                        work[column] += hit.work;
+                        if (hit.status == RootStatus::unknown) {
+                            ++row_unknown;
+                        } else if (hit.status == RootStatus::hit && hit.t < best_t) {
+                            best_t = hit.t;
+                            best = s;
+                        }
+                    }
+                    if (std::isfinite(best_t)) {
+                        ++row_hits;
+                        const std::uint64_t seed =
+                            (static_cast<std::uint64_t>(y) * scene.width + x) * 64 +
+                            static_cast<std::uint64_t>(sy * k + sx);
+                        const ShadingResult shading = shader.shade(ray, best, best_t, seed);
+                        sums[column] += shading.color;
+                        work[column] += shading.work;
+                        const double distance = best_t * glm::length(ray.direction);
+                        if (distance < nearest[column]) {
+                            nearest[column] = distance;
+                            normals[column] = shading.normal;
+                        }
+                    } else {
+                        sums[column] += scene.background;
+                    }
+                }
+            }
+        }
+        const double weight = 1.0 / (k * k);
+        for (int x = 0; x < scene.width; ++x) {
+            const auto column = static_cast<std::size_t>(x);
+            const std::size_t p = static_cast<std::size_t>(y) * scene.width + column;
+            for (int c = 0; c < 3; ++c) {
+                image.color[3 * p + c] = static_cast<float>(sums[column][c] * weight);
+                image.normal[3 * p + c] = static_cast<float>(normals[column][c]);
+            }
+            image.depth[p] = static_cast<float>(nearest[column]);
+            image.work[p] = static_cast<float>(work[column]);
+        }
+        hits += row_hits;
+        unknown += row_unknown;
+        primary_work += row_work;
+        const int done = ++rows_done;
+        if (execution.progress) {
+            std::unique_lock lock(progress_mutex, std::try_to_lock);
+            if (lock.owns_lock()) {
+                execution.progress(static_cast<double>(done) / scene.height);
+            }
+        }
+    };
+
+    const int threads =
+        execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, scene.height, 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              for (int y = range.begin(); y < range.end(); ++y) {
+                                  render_row(y);
+                              }
+                          });
+    });
+    if (stats != nullptr) {
+        stats->seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats->primary_rays = static_cast<long>(pixels) * k * k;
+        stats->hits = hits;
+        stats->unknown = unknown;
+        stats->primary_work = primary_work;
+    }
+    return image;
+}
+
+}  // namespace locus::render

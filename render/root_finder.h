@@ -1,0 +1,92 @@
+// Univariate root finders: the first real root of a ray restriction F(t) = f(o + t·d) in an
+// interval, the question every renderer method answers per pixel and `locus trace` per line.
+//
+// Conventions shared by every method (DESIGN.md, "locus trace"):
+//  * the answer is the smallest root t of F with lo ≤ t ≤ hi, roots of even multiplicity
+//    (tangent rays, singular curves) included;
+//  * a method that cannot decide says so (RootStatus::unknown with a reason) instead of
+//    reporting a silent miss;
+//  * `work` counts the method's unit of effort (Sturm/Bernstein subdivisions, Laguerre or
+//    Newton iterations, QR sweeps) so that benchmarks can chart work per ray.
+// Root finders are closed and hot, so they are plain classes behind a concept and a variant
+// (STYLE.md P8), not virtual classes. None allocates; all scratch lives on the stack.
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <string_view>
+#include <variant>
+
+namespace locus::render {
+
+// Highest degree a restriction may have. Fixed so that per-ray scratch space is a stack array.
+inline constexpr int kMaxDegree = 40;
+
+// F(t) = Σ c[k]·t^k with double coefficients; degree −1 is the zero polynomial.
+struct RayPolynomial {
+    int degree = -1;
+    std::array<double, kMaxDegree + 1> c{};
+
+    double operator()(double t) const {
+        double value = 0.0;
+        for (int k = degree; k >= 0; --k) {
+            value = value * t + c[k];
+        }
+        return value;
+    }
+};
+
+enum class RootStatus { hit, miss, unknown };
+
+struct RootResult {
+    RootStatus status = RootStatus::miss;
+    double t = 0.0;           // the root when status == hit
+    int work = 0;             // method-specific units of effort (see above)
+    const char* reason = "";  // why, when status == unknown (a static string)
+};
+
+// A root finder: `first_root(F, lo, hi)` with lo < hi finite.
+template <class T>
+concept RootFinder = requires(const T& finder, const RayPolynomial& f, double lo, double hi) {
+    { finder.first_root(f, lo, hi) } -> std::same_as<RootResult>;
+    { T::name } -> std::convertible_to<std::string_view>;
+};
+
+// Sturm sequence isolation of the first root, then safeguarded refinement (Illinois).
+struct SturmRootFinder {
+    static constexpr std::string_view name = "sturm";
+    RootResult first_root(const RayPolynomial& f, double lo, double hi) const;
+};
+
+// Descartes' rule of signs on Bernstein coefficients, with de Casteljau subdivision.
+struct BernsteinRootFinder {
+    static constexpr std::string_view name = "bernstein";
+    RootResult first_root(const RayPolynomial& f, double lo, double hi) const;
+};
+
+// Laguerre's method for all complex roots with deflation, then polishing on the original F.
+struct LaguerreRootFinder {
+    static constexpr std::string_view name = "laguerre";
+    RootResult first_root(const RayPolynomial& f, double lo, double hi) const;
+};
+
+// Eigenvalues of the (balanced) companion matrix with Eigen, then polishing on F.
+struct CompanionRootFinder {
+    static constexpr std::string_view name = "eigen";
+    RootResult first_root(const RayPolynomial& f, double lo, double hi) const;
+};
+
+static_assert(RootFinder<SturmRootFinder>);
+static_assert(RootFinder<BernsteinRootFinder>);
+static_assert(RootFinder<LaguerreRootFinder>);
+static_assert(RootFinder<CompanionRootFinder>);
+
+using AnyRootFinder =
+    std::variant<SturmRootFinder, BernsteinRootFinder, LaguerreRootFinder, CompanionRootFinder>;
+
+inline RootResult first_root(const AnyRootFinder& finder, const RayPolynomial& f, double lo,
+                             double hi) {
+    return std::visit([&](const auto& m) { return m.first_root(f, lo, hi); }, finder);
+}
+
+}  // namespace locus::render

@@ -1,0 +1,231 @@
+// Descartes' rule of signs on Bernstein coefficients with de Casteljau subdivision, for the first
+// root of F on [lo, hi].
+//
+// F is mapped to G(s) = F(lo + (hi − lo)·s) on [0, 1] (detail/univariate.h) and converted to
+// the Bernstein basis of degree n. On a piece [a, a + h] the number V of sign changes of the
+// Bernstein coefficients bounds the number of roots inside and has the same parity (Lane &
+// Riesenfeld, "Bounds on a polynomial", BIT 21 (1981) 112–117): V = 0 — no root; V = 1 —
+// exactly one, refined by Illinois on G; V ≥ 2 — split at the midpoint by de Casteljau and look
+// at the left half first, so the first root found is the first root. An explicit stack holds
+// the pending right halves (one per level), so nothing is allocated.
+//
+// Even-multiplicity roots never produce a sign change of G, so they are caught through the
+// control polygon instead: a piece whose coefficients come within the rounding noise of G
+// (kTouchesZero) keeps being subdivided, and a piece narrower than the root tolerance whose
+// polygon still reaches zero is a hit at its midpoint; an end coefficient within the noise is a
+// hit at that end.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "render/root_finder.h"
+#include "render/root_finders/detail/univariate.h"
+
+namespace locus::render {
+namespace {
+
+using detail::Coefficients;
+
+// Subdivision depth limit; the root tolerance (≥ 8ε in s) is reached by depth 50.
+constexpr int kMaxDepth = 56;
+
+// Total subdivisions allowed for one ray before the method gives up (RootStatus::unknown).
+constexpr int kMaxSubdivisions = 2000;
+
+// Coefficient size, per unit of degree, that counts as touching zero: G is normalised to
+// max |g_k| = 1, so its rounding noise is ~(n + 1)·ε; this leaves a margin of ~500.
+constexpr double kTouchesZero = 1e-13;
+
+// 1 / C(n, k) for n, k ≤ kMaxDegree (C(40, 20) ≈ 1.4e11 is exact in a double).
+constexpr auto kInverseBinomial = [] {
+    std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> table{};
+    for (int n = 0; n <= kMaxDegree; ++n) {
+        double c = 1.0;
+        for (int k = 0; k <= n; ++k) {
+            table[n][k] = 1.0 / c;
+            c = c * (n - k) / (k + 1);
+        }
+    }
+    return table;
+}();
+
+// Bernstein coefficients on [0, 1] from power coefficients: b_i = Σ_{k≤i} C(i,k)/C(n,k) g_k,
+// computed with n²/2 additions after scaling by 1/C(n, k).
+void to_bernstein(const Coefficients& g, int n, Coefficients& b) {
+    for (int k = 0; k <= n; ++k) {
+        b[k] = g[k] * kInverseBinomial[n][k];
+    }
+    for (int j = 0; j < n; ++j) {
+        for (int i = n; i > j; --i) {
+            b[i] += b[i - 1];
+        }
+    }
+}
+
+// Splits the piece with coefficients `left` at its midpoint: `left` becomes the left half and
+// `right` the right half (de Casteljau at s = 1/2).
+void split_half(Coefficients& left, Coefficients& right, int n) {
+    std::copy(left.begin(), left.begin() + n + 1, right.begin());
+    for (int k = 1; k <= n; ++k) {
+        for (int i = 0; i <= n - k; ++i) {
+            right[i] = 0.5 * (right[i] + right[i + 1]);
+        }
+        left[k] = right[0];
+    }
+}
+
+}  // namespace
+
+RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, double hi) const {
+    const detail::Screening screening = detail::screen(f, lo, hi);
+    if (screening.done) {
+        return screening.result;
+    }
+    detail::UnitRestriction u;
+    if (!detail::map_to_unit_interval(f, screening.degree, lo, hi, u)) {
+        return detail::unknown("coefficients overflow on the interval", 0);
+    }
+    const Coefficients& g = u.g;
+    const int n = u.degree;
+    const double tol = detail::unit_tolerance(u.w);
+    // G is normalised to max |g_k| = 1, so |G| ≤ n + 1 on [0, 1] bounds its rounding scale.
+    const double touch = detail::kTouchFactor * (n + 1) * detail::kEpsilon;
+    Coefficients dg;
+    detail::derivative(g.data(), n, dg.data());
+
+    int work = 0;
+    const auto at = [&](double s) { return detail::hit(detail::from_unit(s, lo, hi), work); };
+    // A hit at an end s of a piece of width h where F touches zero: when the touch comes from a
+    // tangent within the piece's reach, the critical point is far more accurate than the end.
+    const auto at_end = [&](double s, double h) {
+        const double t = detail::critical_point_near(u, s, work);
+        const double end = detail::from_unit(s, lo, hi);
+        if (t >= lo && t <= hi && std::abs(t - end) <= h * u.w && detail::touches_zero(u, t)) {
+            return detail::hit(t, work);
+        }
+        return detail::hit(end, work);
+    };
+    const auto touches_at = [&](double s) {
+        return detail::touches_zero(u, detail::from_unit(s, lo, hi));
+    };
+    // The root in [a, b] when G(a)·G(b) < 0 (Horner values).
+    const auto refine = [&](double a, double b, double ga, double gb) {
+        return detail::hit(detail::refine_root(u, false, a, b, ga, gb, work), work);
+    };
+
+    // The piece being examined: [a, a + 2^-depth] with Bernstein coefficients `piece`; pending
+    // right halves wait on the stack, innermost last.
+    Coefficients piece;
+    to_bernstein(g, n, piece);
+    double a = 0.0;
+    int depth = 0;
+    std::array<Coefficients, kMaxDepth> stack;
+    std::array<double, kMaxDepth> stack_a;
+    std::array<int, kMaxDepth> stack_depth;
+    int top = 0;
+    for (;;) {
+        const double width = std::ldexp(1.0, -depth);
+        const double b = a + width;
+        int variations = 0;
+        double smallest = std::abs(piece[0]);
+        for (int i = 1; i <= n; ++i) {
+            variations += (piece[i] < 0.0) != (piece[i - 1] < 0.0) ? 1 : 0;
+            smallest = std::min(smallest, std::abs(piece[i]));
+        }
+        bool subdivide = false;
+        if (variations == 0 && smallest > touch) {
+            // The control polygon stays clear of zero: no root here.
+        } else if (variations == 1) {
+            // Exactly one root, a sign change of G: refine on the power form.
+            const double ga = detail::horner(g.data(), n, a);
+            const double gb = detail::horner(g.data(), n, b);
+            if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
+                return refine(a, b, ga, gb);
+            }
+            // Rounding disagrees with the polygon: a root within noise of an end, or a polygon
+            // blurred by rounding that a closer look settles.
+            if (touches_at(a)) {
+                return at_end(a, width);
+            }
+            if (touches_at(b)) {
+                return at_end(b, width);
+            }
+            subdivide = true;
+        } else {
+            // Several sign changes, or a polygon that touches zero: look at G' (coefficients
+            // n·(b_{i+1} − b_i)). Monotone or unimodal G is settled without subdividing.
+            int turns = 0;
+            for (int i = 2; i <= n; ++i) {
+                turns += (piece[i] - piece[i - 1] < 0.0) != (piece[i - 1] - piece[i - 2] < 0.0);
+            }
+            const double ga = detail::horner(g.data(), n, a);
+            const double gb = detail::horner(g.data(), n, b);
+            if (turns == 0) {
+                if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
+                    return refine(a, b, ga, gb);
+                }
+                if (touches_at(a)) {
+                    return at_end(a, width);
+                }
+                if (touches_at(b)) {
+                    return at_end(b, width);
+                }
+            } else if (turns == 1) {
+                const double da = detail::horner(dg.data(), n - 1, a);
+                const double db = detail::horner(dg.data(), n - 1, b);
+                if (da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)) {
+                    // One critical point c: G is monotone on [a, c] and on [c, b].
+                    const double tc = detail::refine_root(u, true, a, b, da, db, work);
+                    const double c = std::clamp((tc - lo) / u.w, a, b);
+                    const double gc = detail::horner(g.data(), n, c);
+                    if (ga != 0.0 && (gc < 0.0) != (ga < 0.0)) {
+                        return gc == 0.0 ? at(c) : refine(a, c, ga, gc);
+                    }
+                    if (detail::touches_zero(u, tc)) {
+                        return detail::hit(tc, work);  // an even-multiplicity root: a tangent
+                    }
+                    if (touches_at(a)) {
+                        return at_end(a, width);
+                    }
+                    if ((gb < 0.0) != (gc < 0.0)) {
+                        return gb == 0.0 ? at(b) : refine(c, b, gc, gb);
+                    }
+                    if (touches_at(b)) {
+                        return at_end(b, width);
+                    }
+                } else {
+                    subdivide = true;  // rounding blurs the critical point; look closer
+                }
+            } else {
+                subdivide = true;
+            }
+        }
+        if (subdivide) {
+            if (width <= tol) {
+                return at(a + 0.5 * width);  // a cluster narrower than the tolerance
+            }
+            if (depth >= kMaxDepth || work >= kMaxSubdivisions) {
+                return detail::unknown("bernstein subdivision limit reached", work);
+            }
+            ++depth;
+            stack_a[top] = a + std::ldexp(1.0, -depth);
+            stack_depth[top] = depth;
+            split_half(piece, stack[top], n);
+            ++top;
+            ++work;
+            continue;
+        }
+        if (top == 0) {
+            break;
+        }
+        --top;
+        std::copy(stack[top].begin(), stack[top].begin() + n + 1, piece.begin());
+        a = stack_a[top];
+        depth = stack_depth[top];
+    }
+    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi)
+               ? detail::hit(hi, work)
+               : detail::miss(work);
+}
+
+}  // namespace locus::render

@@ -1,0 +1,314 @@
+// Sturm sequence isolation of the first root of F on [lo, hi], then Illinois refinement.
+//
+// F is first mapped to G(s) = F(lo + (hi − lo)·s) on s ∈ [0, 1] (detail/univariate.h). The
+// sequence p₀ = G, p₁ = G', p_{i+1} = −rem(p_{i−1}, p_i) is built in doubles with every member
+// normalised to max |coefficient| = 1; a remainder whose coefficients are all below
+// kRemainderZero of the division's scale counts as zero and ends the sequence. Ending at a
+// near-common factor of G and G' is deliberate: the number of sign changes V(a) − V(b) then counts
+// the *distinct* roots of G in (a, b] (the generalised Sturm theorem, e.g. Basu, Pollack & Roy,
+// "Algorithms in Real Algebraic Geometry", Thm 2.50), so a double root — a tangent ray — is one
+// root and is reported as a hit, and a pair of roots closer than about √kRemainderZero merges
+// into one such root. Bisection on counts isolates the first root; a bracket with a sign change
+// is refined by Illinois, one without (even multiplicity) by further bisection on counts.
+// Reference for the method in ray tracing: Hook & McAree, "Using Sturm sequences to bracket real
+// roots of polynomial equations", Graphics Gems I (1990) 416–422.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "render/root_finder.h"
+#include "render/root_finders/detail/univariate.h"
+
+namespace locus::render {
+namespace {
+
+using detail::Coefficients;
+
+// A remainder whose coefficients are all below kRemainderZero times the scale of its division
+// (the largest quotient coefficient, members being normalised) is zero. This separates roots
+// ≳ 1e-5 apart (a close pair r ± δ leaves a remainder of relative size ~δ²) and catches the
+// double roots whose remainder noise stays small; the Euclidean steps can amplify rounding to
+// far more (1e-10 to 1e-7 at degree 7 was observed), which kRemainderSuspect handles.
+constexpr double kRemainderZero = 1e-11;
+
+// A remainder below this relative size marks its divisor as a suspected near-common factor: a
+// double root that rounding turned into a complex pair r ± iδ has no sign change and the counts
+// miss it, so the roots of that divisor are checked as tangent points (G' = 0 and G touches
+// zero within rounding). The check is by value, so a large threshold costs time, not accuracy.
+constexpr double kRemainderSuspect = 1e-5;
+
+// Bisections allowed on counts; the unit interval is exhausted in doubles long before.
+constexpr int kMaxBisections = 80;
+
+// Tries of the root of G' as the tangent point of an even-multiplicity root, and how far (in s)
+// the last try may move from the bracket found by counts.
+constexpr int kMaxTangentAttempts = 3;
+constexpr double kTangentReach = 1e-4;
+
+// The Sturm sequence of G on [0, 1]: member i has degree degree[i] and coefficients
+// coefficients[offset[i] .. offset[i] + degree[i]].
+struct SturmSequence {
+    std::array<double, (kMaxDegree + 1) * (kMaxDegree + 2) / 2> coefficients;
+    std::array<int, kMaxDegree + 2> offset;
+    std::array<int, kMaxDegree + 2> degree;
+    int size = 0;
+    int suspect = -1;  // a member suspected to be a near-common factor, see kRemainderSuspect
+
+    const double* member(int i) const { return coefficients.data() + offset[i]; }
+    double* member(int i) { return coefficients.data() + offset[i]; }
+};
+
+// Appends sign·r (degree d) normalised to max |coefficient| = 1.
+void append(SturmSequence& s, const double* r, int d, double sign) {
+    const int i = s.size;
+    s.offset[i] = i == 0 ? 0 : s.offset[i - 1] + s.degree[i - 1] + 1;
+    s.degree[i] = d;
+    double largest = 0.0;
+    for (int k = 0; k <= d; ++k) {
+        largest = std::max(largest, std::abs(r[k]));
+    }
+    const double factor = sign / largest;
+    double* p = s.member(i);
+    for (int k = 0; k <= d; ++k) {
+        p[k] = r[k] * factor;
+    }
+    ++s.size;
+}
+
+void build_sequence(const Coefficients& g, int n, SturmSequence& s) {
+    s.size = 0;
+    s.suspect = -1;
+    append(s, g.data(), n, 1.0);
+    Coefficients r;
+    detail::derivative(g.data(), n, r.data());
+    append(s, r.data(), n - 1, 1.0);
+    double smallest_remainder = kRemainderSuspect;
+    while (s.degree[s.size - 1] > 0) {
+        const double* previous = s.member(s.size - 2);
+        const double* divisor = s.member(s.size - 1);
+        const int d1 = s.degree[s.size - 2];
+        const int d2 = s.degree[s.size - 1];
+        std::copy(previous, previous + d1 + 1, r.begin());
+        const double inverse_lead = 1.0 / divisor[d2];
+        double largest_quotient = 1.0;
+        for (int k = d1; k >= d2; --k) {
+            const double q = r[k] * inverse_lead;
+            largest_quotient = std::max(largest_quotient, std::abs(q));
+            for (int j = 0; j < d2; ++j) {
+                r[k - d2 + j] -= q * divisor[j];
+            }
+        }
+        // Members have max |coefficient| 1, so the terms of the division are ≤ the quotient.
+        const double zero = kRemainderZero * largest_quotient;
+        int d = d2 - 1;
+        while (d >= 0 && std::abs(r[d]) <= zero) {
+            --d;
+        }
+        if (d < 0) {
+            break;  // a (near) common factor: the sequence ends at the divisor
+        }
+        double largest = 0.0;
+        for (int k = 0; k <= d; ++k) {
+            largest = std::max(largest, std::abs(r[k]));
+        }
+        if (largest < smallest_remainder * largest_quotient) {
+            smallest_remainder = largest / largest_quotient;
+            s.suspect = s.size - 1;
+        }
+        append(s, r.data(), d, -1.0);
+    }
+}
+
+// Number of sign changes of the sequence at s (zeros skipped).
+int sign_changes(const SturmSequence& seq, double s) {
+    int changes = 0;
+    double previous = 0.0;
+    for (int i = 0; i < seq.size; ++i) {
+        const double v = detail::horner(seq.member(i), seq.degree[i], s);
+        if (v != 0.0) {
+            changes += (previous != 0.0 && (v < 0.0) != (previous < 0.0)) ? 1 : 0;
+            previous = v;
+        }
+    }
+    return changes;
+}
+
+int sign_changes_at_zero(const SturmSequence& seq) {
+    int changes = 0;
+    double previous = 0.0;
+    for (int i = 0; i < seq.size; ++i) {
+        const double v = seq.member(i)[0];
+        if (v != 0.0) {
+            changes += (previous != 0.0 && (v < 0.0) != (previous < 0.0)) ? 1 : 0;
+            previous = v;
+        }
+    }
+    return changes;
+}
+
+int sign_changes_at_one(const SturmSequence& seq) {
+    int changes = 0;
+    double previous = 0.0;
+    for (int i = 0; i < seq.size; ++i) {
+        const double* p = seq.member(i);
+        double v = 0.0;
+        for (int k = seq.degree[i]; k >= 0; --k) {
+            v += p[k];
+        }
+        if (v != 0.0) {
+            changes += (previous != 0.0 && (v < 0.0) != (previous < 0.0)) ? 1 : 0;
+            previous = v;
+        }
+    }
+    return changes;
+}
+
+// The first root of G in (0, 1] by Sturm counts, as t, or NaN when the counts find none.
+double first_counted_root(const SturmSequence& seq, const detail::UnitRestriction& u, int& work) {
+    const Coefficients& g = u.g;
+    const int n = u.degree;
+    double a = 0.0;
+    double b = 1.0;
+    int va = sign_changes_at_zero(seq);
+    int vb = sign_changes_at_one(seq);
+    if (va - vb <= 0) {
+        return NAN;
+    }
+    const double tol = detail::unit_tolerance(u.w);
+    // Isolate the first distinct root: keep the left half whenever it holds a root.
+    while (va - vb > 1) {
+        if (b - a <= tol || work >= kMaxBisections) {
+            return detail::from_unit(0.5 * (a + b), u.lo, u.hi);  // a cluster
+        }
+        const double m = 0.5 * (a + b);
+        const int vm = sign_changes(seq, m);
+        ++work;
+        if (va - vm >= 1) {
+            b = m;
+            vb = vm;
+        } else {
+            a = m;
+            va = vm;
+        }
+    }
+    const double ga = detail::horner(g.data(), n, a);
+    const double gb = detail::horner(g.data(), n, b);
+    if (gb == 0.0) {
+        return detail::from_unit(b, u.lo, u.hi);
+    }
+    if ((ga < 0.0) != (gb < 0.0) && ga != 0.0) {
+        return detail::refine_root(u, false, a, b, ga, gb, work);
+    }
+    // One distinct root and no sign change: even multiplicity, a simple root of G' — or counts
+    // spoiled by rounding (a member with a small leading coefficient amplifies it), hiding two
+    // close simple roots. Bisect on counts; whenever G' changes sign on the bracket, look at
+    // its root c: G(c) of the other sign than G(a) reveals a sign change in [a, c], and G
+    // touching zero at c is the tangent, far better conditioned than the counts near it.
+    Coefficients dg;
+    detail::derivative(g.data(), n, dg.data());
+    int attempts = 0;
+    while (b - a > tol && work < kMaxBisections) {
+        const double da = detail::horner(dg.data(), n - 1, a);
+        const double db = detail::horner(dg.data(), n - 1, b);
+        if (attempts < kMaxTangentAttempts && da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)) {
+            ++attempts;
+            const double t = detail::refine_root(u, true, a, b, da, db, work);
+            const double c = std::clamp((t - u.lo) / u.w, a, b);
+            const double g_a = detail::horner(g.data(), n, a);
+            const double g_c = detail::horner(g.data(), n, c);
+            if (g_a != 0.0 && g_c != 0.0 && (g_a < 0.0) != (g_c < 0.0)) {
+                return detail::refine_root(u, false, a, c, g_a, g_c, work);
+            }
+            if (detail::touches_zero(u, t)) {
+                return t;
+            }
+        }
+        const double m = 0.5 * (a + b);
+        const int vm = sign_changes(seq, m);
+        ++work;
+        if (va - vm >= 1) {
+            b = m;
+        } else {
+            a = m;
+            va = vm;
+        }
+    }
+    // Counts near a tangent are noise-limited; the critical point next to the bracket is not.
+    const double m = 0.5 * (a + b);
+    const double t = detail::critical_point_near(u, m, work);
+    return std::abs(t - detail::from_unit(m, u.lo, u.hi)) <= kTangentReach * u.w &&
+                   t >= u.lo && t <= u.hi && detail::touches_zero(u, t)
+               ? t
+               : detail::from_unit(m, u.lo, u.hi);
+}
+
+// The first tangent point t ≤ limit among the real roots of the suspected near-common factor
+// (degree 1 or 2; higher degrees, three or more near-double roots at once, are not examined),
+// each moved to the nearby critical point of G by Newton on G'; NaN when none touches zero.
+double first_suspected_tangent(const SturmSequence& seq, const detail::UnitRestriction& u,
+                               double limit, int& work) {
+    const double* p = seq.member(seq.suspect);
+    std::array<double, 2> candidates;
+    int count = 0;
+    if (seq.degree[seq.suspect] == 1) {
+        candidates[count++] = -p[0] / p[1];
+    } else if (seq.degree[seq.suspect] == 2) {
+        // A complex pair of the factor is still a candidate through its real part.
+        const double discriminant = std::max(0.0, p[1] * p[1] - 4.0 * p[2] * p[0]);
+        const double q = -0.5 * (p[1] + std::copysign(std::sqrt(discriminant), p[1]));
+        candidates[count++] = q / p[2];
+        if (q != 0.0) {
+            candidates[count++] = p[0] / q;
+        }
+    }
+    double best = NAN;
+    for (int i = 0; i < count; ++i) {
+        if (!(candidates[i] >= -0.5 && candidates[i] <= 1.5)) {
+            continue;
+        }
+        const double t = detail::critical_point_near(u, candidates[i], work);
+        if (t >= u.lo && t <= limit && !(t >= best) && detail::touches_zero(u, t)) {
+            best = t;
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double hi) const {
+    const detail::Screening screening = detail::screen(f, lo, hi);
+    if (screening.done) {
+        return screening.result;
+    }
+    detail::UnitRestriction u;
+    if (!detail::map_to_unit_interval(f, screening.degree, lo, hi, u)) {
+        return detail::unknown("coefficients overflow on the interval", 0);
+    }
+    int work = 0;
+    double t = NAN;
+    if (u.degree > 0) {
+        SturmSequence seq;
+        build_sequence(u.g, u.degree, seq);
+        t = first_counted_root(seq, u, work);
+        if (seq.suspect >= 0) {
+            // A tangent before the counted root wins; so does one just after it when the
+            // counted root is not a root in the better basis (rounding noise of G around the
+            // tangent produced its sign change).
+            const double limit = std::isnan(t) ? hi : std::min(hi, t + kTangentReach * u.w);
+            const double tangent = first_suspected_tangent(seq, u, limit, work);
+            if (!std::isnan(tangent) &&
+                (std::isnan(t) || tangent <= t || !detail::is_root_within_rounding(u, t))) {
+                t = tangent;
+            }
+        }
+    }
+    if (!std::isnan(t)) {
+        return detail::hit(t, work);
+    }
+    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi)
+               ? detail::hit(hi, work)
+               : detail::miss(work);
+}
+
+}  // namespace locus::render

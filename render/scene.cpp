@@ -1,0 +1,41 @@
+#include "render/scene.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace locus::render {
+
+std::vector<Light> default_lights() {
+    Light key;
+    key.direction = glm::normalize(Vec3{-0.5, 0.8, 0.7});
+    key.color = {1.0, 0.97, 0.92};
+    key.intensity = 0.85;
+    Light fill;
+    fill.direction = glm::normalize(Vec3{0.8, 0.1, 0.4});
+    fill.color = {0.75, 0.82, 1.0};
+    fill.intensity = 0.35;
+    return {key, fill};
+}
+
+CameraSpec default_camera(const Scene& scene) {
+    Vec3 low{INFINITY}, high{-INFINITY};
+    for (const Surface& surface : scene.surfaces) {
+        const ClipSphere sphere = bounding_sphere(surface.clip);
+        low = glm::min(low, sphere.center - Vec3(sphere.radius));
+        high = glm::max(high, sphere.center + Vec3(sphere.radius));
+    }
+    if (scene.surfaces.empty()) {
+        low = Vec3(-2.0);
+        high = Vec3(2.0);
+    }
+    const Vec3 center = (low + high) * 0.5;
+    const double radius = glm::length(high - low) * 0.5 / std::sqrt(3.0);
+    CameraSpec camera;
+    camera.target = center;
+    const double half_fov = camera.fov_degrees * std::numbers::pi / 360.0;
+    const double distance = 1.08 * radius / std::sin(half_fov);
+    camera.eye = center + distance * glm::normalize(Vec3{0.55, 0.45, 1.0});
+    return camera;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,71 @@
+// What a picture needs, with every default stated here (STYLE.md P11): the member initialisers
+// are the documented defaults. A scene file (TOML, read by scene_file.h) or the command line
+// sets only what differs.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/clip_region.h"
+#include "render/trace_method.h"
+
+namespace locus::render {
+
+// Blinn–Phong, two-sided: the side where f > 0 ("outside", the normal ∇f points there) and the
+// side where f < 0 ("inside") have their own colours, as in surf and SURFER.
+struct Material {
+    Vec3 outside{0.95, 0.62, 0.22};
+    Vec3 inside{0.30, 0.52, 0.90};
+    double ambient = 0.15;
+    double diffuse = 0.75;
+    double specular = 0.35;
+    double shininess = 48.0;
+};
+
+struct Light {
+    enum class Kind { directional, point } kind = Kind::directional;
+    Vec3 direction{-0.4, 0.8, 0.6};  // towards the light (directional)
+    Vec3 position{0.0, 5.0, 5.0};    // point lights
+    Vec3 color{1.0, 1.0, 1.0};
+    double intensity = 1.0;
+    // Soft shadows: the light's radius (world units for point lights, radians of angular
+    // radius for directional ones); 0 gives hard shadows.
+    double radius = 0.0;
+};
+
+struct Surface {
+    std::string equation;    // over x, y, z
+    std::string param_file;  // or a .param file, implicitized by the caller (cli/)
+    ClipRegion clip = ClipSphere{};
+    Material material;
+};
+
+struct RenderOptions {
+    TraceMethod method = TraceMethod::sturm;
+    int samples = 1;  // samples × samples per pixel
+    bool shadows = true;
+    int soft_shadow_samples = 8;  // shadow rays per light when its radius is non-zero
+    bool ambient_occlusion = false;
+    int ambient_occlusion_samples = 16;
+    int threads = 0;  // 0: all hardware threads
+};
+
+struct Scene {
+    int width = 512;
+    int height = 512;
+    Vec3 background{0.10, 0.11, 0.13};
+    std::optional<CameraSpec> camera;  // none: framed on the clip regions (default_camera)
+    std::vector<Light> lights;         // empty: default_lights()
+    std::vector<Surface> surfaces;
+    RenderOptions options;
+};
+
+// Two directional lights: a warm key from the upper left front, a cool fill from the right.
+std::vector<Light> default_lights();
+// Looks at the centre of the surfaces' clip regions from the front, upper right, at the
+// distance where their bounding sphere fills the vertical field of view.
+CameraSpec default_camera(const Scene& scene);
+
+}  // namespace locus::render

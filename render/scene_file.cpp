@@ -1,0 +1,307 @@
+#include "render/scene_file.h"
+
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "algebra/error.h"
+
+namespace locus::render {
+
+namespace {
+
+std::string position(const toml::node& node) {
+    const toml::source_position begin = node.source().begin;
+    return "line " + std::to_string(begin.line) + ", column " + std::to_string(begin.column);
+}
+
+std::string describe(const toml::node& node) {
+    std::ostringstream out;
+    switch (node.type()) {
+    case toml::node_type::string:
+        out << '"' << node.as_string()->get() << '"';
+        break;
+    case toml::node_type::table:
+        out << "a table";
+        break;
+    case toml::node_type::array:
+        out << "an array of " << node.as_array()->size();
+        break;
+    default:
+        node.visit([&](const auto& value) { out << value; });
+    }
+    return out.str();
+}
+
+// Reads one TOML table, remembering which keys were used so that the rest can be reported.
+class TableReader {
+  public:
+    TableReader(const toml::table& table, std::string path)
+        : table_(table), path_(std::move(path)) {}
+
+    [[noreturn]] void fail(const toml::node& node, const std::string& key,
+                           const std::string& expected) const {
+        throw InputError(position(node) + ": " + path_ + key,
+                         "expected " + expected + ", found " + describe(node));
+    }
+
+    const toml::node* find(const std::string& key) {
+        used_.insert(key);
+        return table_.get(key);
+    }
+
+    double number(const std::string& key, double fallback, bool positive = false) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return fallback;
+        }
+        std::optional<double> value = node->value<double>();
+        if (!value || !std::isfinite(*value) || (positive && !(*value > 0.0))) {
+            fail(*node, key, positive ? "a positive number" : "a number");
+        }
+        return *value;
+    }
+
+    double non_negative(const std::string& key, double fallback) {
+        const toml::node* node = find(key);
+        const double value = number(key, fallback);
+        if (node != nullptr && value < 0.0) {
+            fail(*node, key, "a number ≥ 0");
+        }
+        return value;
+    }
+
+    int count(const std::string& key, int fallback, int low, int high) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return fallback;
+        }
+        const std::optional<std::int64_t> value = node->value<std::int64_t>();
+        if (!node->is_integer() || !value || *value < low || *value > high) {
+            fail(*node, key,
+                 "an integer from " + std::to_string(low) + " to " + std::to_string(high));
+        }
+        return static_cast<int>(*value);
+    }
+
+    bool flag(const std::string& key, bool fallback) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return fallback;
+        }
+        if (!node->is_boolean()) {
+            fail(*node, key, "true or false");
+        }
+        return *node->value<bool>();
+    }
+
+    std::optional<std::string> text(const std::string& key) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return std::nullopt;
+        }
+        if (!node->is_string()) {
+            fail(*node, key, "a string");
+        }
+        return std::string(*node->value<std::string_view>());
+    }
+
+    Vec3 vector(const std::string& key, Vec3 fallback) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return fallback;
+        }
+        const toml::array* array = node->as_array();
+        if (array == nullptr || array->size() != 3) {
+            fail(*node, key, "an array of three numbers");
+        }
+        Vec3 v;
+        for (int i = 0; i < 3; ++i) {
+            const std::optional<double> value =
+                (*array)[static_cast<std::size_t>(i)].value<double>();
+            if (!value || !std::isfinite(*value)) {
+                fail(*node, key, "an array of three numbers");
+            }
+            v[i] = *value;
+        }
+        return v;
+    }
+
+    const toml::table* subtable(const std::string& key) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return nullptr;
+        }
+        if (!node->is_table()) {
+            fail(*node, key, "a table");
+        }
+        return node->as_table();
+    }
+
+    const toml::array* array_of_tables(const std::string& key) {
+        const toml::node* node = find(key);
+        if (node == nullptr) {
+            return nullptr;
+        }
+        if (!node->is_array_of_tables()) {
+            fail(*node, key, "an array of tables ([[" + key + "]])");
+        }
+        return node->as_array();
+    }
+
+    // Rejects every key that was not asked for.
+    void finish() const {
+        for (const auto& [key, node] : table_) {
+            const std::string name(key.str());
+            if (!used_.contains(name)) {
+                const toml::source_position begin = key.source().begin;
+                throw InputError("line " + std::to_string(begin.line) + ", column " +
+                                     std::to_string(begin.column) + ": " + path_ + name,
+                                 "unknown key");
+            }
+        }
+    }
+
+  private:
+    const toml::table& table_;
+    std::string path_;
+    std::set<std::string> used_;
+};
+
+Material read_material(const toml::table& table, const std::string& path) {
+    TableReader r(table, path);
+    Material m;
+    m.outside = r.vector("outside", m.outside);
+    m.inside = r.vector("inside", m.inside);
+    m.ambient = r.non_negative("ambient", m.ambient);
+    m.diffuse = r.non_negative("diffuse", m.diffuse);
+    m.specular = r.non_negative("specular", m.specular);
+    m.shininess = r.number("shininess", m.shininess, true);
+    r.finish();
+    return m;
+}
+
+Surface read_surface(const toml::table& table, const std::string& path) {
+    TableReader r(table, path);
+    Surface s;
+    const std::optional<std::string> equation = r.text("equation");
+    const std::optional<std::string> param = r.text("param");
+    if (equation.has_value() == param.has_value()) {
+        throw InputError(position(table) + ": " + path.substr(0, path.size() - 1),
+                         "give exactly one of 'equation' and 'param'");
+    }
+    s.equation = equation.value_or("");
+    s.param_file = param.value_or("");
+    const std::string shape = r.text("clip").value_or("sphere");
+    if (shape == "sphere") {
+        ClipSphere sphere;
+        sphere.radius = r.number("clip_radius", sphere.radius, true);
+        sphere.center = r.vector("clip_center", sphere.center);
+        s.clip = sphere;
+    } else if (shape == "box") {
+        ClipBox box;
+        box.min = r.vector("clip_min", box.min);
+        box.max = r.vector("clip_max", box.max);
+        if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) {
+            throw InputError(position(table) + ": " + path + "clip_min",
+                             "must be below clip_max in every coordinate");
+        }
+        s.clip = box;
+    } else {
+        throw InputError(position(*table.get("clip")) + ": " + path + "clip",
+                         "expected \"sphere\" or \"box\", found \"" + shape + "\"");
+    }
+    if (const toml::table* material = r.subtable("material")) {
+        s.material = read_material(*material, path + "material.");
+    }
+    r.finish();
+    return s;
+}
+
+Light read_light(const toml::table& table, const std::string& path) {
+    TableReader r(table, path);
+    Light light;
+    const std::string type = r.text("type").value_or("directional");
+    if (type == "directional") {
+        light.direction = r.vector("direction", light.direction);
+        if (!(glm::length(light.direction) > 0.0)) {
+            throw InputError(position(table) + ": " + path + "direction", "must be non-zero");
+        }
+        light.direction = glm::normalize(light.direction);
+    } else if (type == "point") {
+        light.kind = Light::Kind::point;
+        light.position = r.vector("position", light.position);
+    } else {
+        throw InputError(position(*table.get("type")) + ": " + path + "type",
+                         "expected \"directional\" or \"point\", found \"" + type + "\"");
+    }
+    light.color = r.vector("color", light.color);
+    light.intensity = r.non_negative("intensity", light.intensity);
+    light.radius = r.non_negative("radius", light.radius);
+    r.finish();
+    return light;
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text) {
+    toml::table root;
+    try {
+        root = toml::parse(text);
+    } catch (const toml::parse_error& e) {
+        const toml::source_position begin = e.source().begin;
+        throw ParseError(begin.line, begin.column, "valid TOML", std::string(e.description()));
+    }
+    Scene scene;
+    TableReader r(root, "");
+    if (const toml::table* image = r.subtable("image")) {
+        TableReader ri(*image, "image.");
+        scene.width = ri.count("width", scene.width, 1, 16384);
+        scene.height = ri.count("height", scene.height, 1, 16384);
+        scene.background = ri.vector("background", scene.background);
+        ri.finish();
+    }
+    if (const toml::table* camera = r.subtable("camera")) {
+        TableReader rc(*camera, "camera.");
+        CameraSpec spec;
+        spec.eye = rc.vector("eye", spec.eye);
+        spec.target = rc.vector("target", spec.target);
+        spec.up = rc.vector("up", spec.up);
+        spec.fov_degrees = rc.number("fov", spec.fov_degrees, true);
+        rc.finish();
+        scene.camera = spec;
+    }
+    if (const toml::array* lights = r.array_of_tables("light")) {
+        for (std::size_t i = 0; i < lights->size(); ++i) {
+            scene.lights.push_back(
+                read_light(*(*lights)[i].as_table(), "light[" + std::to_string(i + 1) + "]."));
+        }
+    }
+    if (const toml::array* surfaces = r.array_of_tables("surface")) {
+        for (std::size_t i = 0; i < surfaces->size(); ++i) {
+            scene.surfaces.push_back(read_surface(*(*surfaces)[i].as_table(),
+                                                  "surface[" + std::to_string(i + 1) + "]."));
+        }
+    }
+    if (const toml::table* options = r.subtable("render")) {
+        TableReader ro(*options, "render.");
+        if (const auto method = ro.text("method")) {
+            scene.options.method = parse_trace_method(*method);
+        }
+        scene.options.samples = ro.count("samples", scene.options.samples, 1, 16);
+        scene.options.shadows = ro.flag("shadows", scene.options.shadows);
+        scene.options.ambient_occlusion =
+            ro.flag("ambient_occlusion", scene.options.ambient_occlusion);
+        scene.options.threads = ro.count("threads", scene.options.threads, 0, 1024);
+        ro.finish();
+    }
+    r.finish();
+    if (scene.surfaces.empty()) {
+        throw InputError("surface", "a scene needs at least one [[surface]]");
+    }
+    return scene;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,29 @@
+// Scene files in TOML: only what a scene needs, everything else defaulted (render/scene.h).
+//
+//     [image]    width = 640   height = 480   background = [0.1, 0.1, 0.1]
+//     [camera]   eye = [3, 2, 6]   target = [0, 0, 0]   up = [0, 1, 0]   fov = 35
+//     [[light]]  type = "directional"  direction = [-1, 1, 1]  color = [1, 1, 1]
+//                intensity = 1  radius = 0.05          # or type = "point", position = [...]
+//     [[surface]]
+//     equation = "x^2+y^2+z^2-1"                        # or param = "torus.param"
+//     clip = "sphere"  clip_radius = 2  clip_center = [0, 0, 0]
+//                                                       # or clip = "box", clip_min, clip_max
+//     [surface.material] outside = [...]  inside = [...]  ambient  diffuse  specular  shininess
+//     [render]   method = "sturm"  samples = 2  shadows = true  ambient_occlusion = false
+//                threads = 0
+//
+// Every error names the key (as a dotted path) and its position: a TOML syntax error is a
+// ParseError with line and column; an unknown key, a value of the wrong type or out of range
+// is an InputError such as "line 4, column 1: surface[1].clip_radius: expected a positive
+// number, found -2".
+#pragma once
+
+#include <string_view>
+
+#include "render/scene.h"
+
+namespace locus::render {
+
+Scene parse_scene(std::string_view text);
+
+}  // namespace locus::render

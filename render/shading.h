@@ -1,0 +1,58 @@
+// Blinn–Phong shading of a hit with several lights, hard or soft shadows traced through the
+// same SurfaceTracer as the primary rays, and normal-sampled ambient occlusion.
+//
+// The normal is ∇f/|∇f| turned towards the viewer; the side the viewer sees selects the
+// material colour (outside where f > 0). Where ∇f vanishes or is not finite (a singular point
+// of the surface, hit exactly), the rule is: the normal faces the viewer (n = −d/|d|) and the
+// outside colour is used, so no pixel is ever NaN.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "render/scene.h"
+#include "render/surface_tracer.h"
+
+namespace locus::render {
+
+// One surface as the shader sees it.
+struct ShadedSurface {
+    const SurfaceTracer* tracer;
+    ClipRegion clip;
+    Material material;
+};
+
+struct ShadingResult {
+    Vec3 color;
+    Vec3 normal;   // unit, towards the viewer
+    int work = 0;  // root-finder work spent on shadow and occlusion rays
+};
+
+class Shader {
+  public:
+    // `scale`: scene size (largest clip radius), for ray offsets and occlusion distance.
+    Shader(std::span<const ShadedSurface> surfaces, std::span<const Light> lights,
+           const RenderOptions& options, double scale);
+
+    // Shades the hit of `ray` with surface `index` at parameter t; `seed` decorrelates the
+    // stochastic directions of soft shadows and occlusion between pixels.
+    ShadingResult shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed) const;
+
+  private:
+    // Fraction of `light` visible from `point` (1 unlit by nothing, 0 fully in shadow).
+    double visibility(const Vec3& point, const Vec3& normal, const Light& light, std::uint64_t seed,
+                      int& work) const;
+    double ambient_occlusion(const Vec3& point, const Vec3& normal, std::uint64_t seed,
+                             int& work) const;
+    bool is_occluded(const Ray& ray, double t_max, int& work) const;
+
+    std::span<const ShadedSurface> surfaces_;
+    std::span<const Light> lights_;
+    RenderOptions options_;
+    double scale_;
+};
+
+// Linear radiance to an 8-bit sRGB channel value.
+std::uint8_t to_srgb8(double linear);
+
+}  // namespace locus::render

@@ -1,0 +1,96 @@
+#include "render/surface_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/sphere_tracing.h"
+
+namespace locus::render {
+
+namespace {
+AnyRootFinder finder_for(TraceMethod method) {
+    switch (method) {
+    case TraceMethod::bernstein:
+        return BernsteinRootFinder{};
+    case TraceMethod::laguerre:
+        return LaguerreRootFinder{};
+    case TraceMethod::eigen:
+        return CompanionRootFinder{};
+    default:
+        return SturmRootFinder{};
+    }
+}
+}  // namespace
+
+SurfaceTracer::SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod method, double scale)
+    : f_(&f), restrictor_(f.terms()), method_(method), finder_(finder_for(method)), scale_(scale) {}
+
+RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
+                                    const RayPolynomial* restriction,
+                                    double restriction_origin) const {
+    if (interval.is_empty()) {
+        return {};
+    }
+    const double speed = glm::length(ray.direction);
+    switch (method_) {
+    case TraceMethod::exact: {
+        const algebra::ExactRoot root = algebra::exact_first_root(
+            *f_, to_point(ray.origin), to_point(ray.direction), interval.lo, interval.hi);
+        RootResult result;
+        result.work = 1;
+        if (root.status == algebra::ExactRoot::Status::miss) {
+            result.status = RootStatus::miss;
+        } else {
+            // A ray inside the surface meets it at once.
+            result.status = RootStatus::hit;
+            result.t = root.t;
+        }
+        return result;
+    }
+    case TraceMethod::sphere_gradient:
+        return sphere_trace_gradient(*f_, ray, interval, 1e-7 * scale_);
+    default:
+        break;
+    }
+    if (restriction != nullptr) {
+        return polished(ray, interval,
+                        on_restriction(*restriction, restriction_origin, interval, speed));
+    }
+    const double middle = 0.5 * (interval.lo + interval.hi);
+    const RayPolynomial computed = restrictor_.restrict_to(ray.at(middle), ray.direction);
+    return polished(ray, interval, on_restriction(computed, middle, interval, speed));
+}
+
+RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, double origin,
+                                         Interval interval, double speed) const {
+    const Interval shifted{interval.lo - origin, interval.hi - origin};
+    RootResult found;
+    if (method_ == TraceMethod::sphere_lipschitz) {
+        found = sphere_trace_lipschitz(restriction, shifted, 1e-9 * scale_ / speed);
+    } else {
+        found = first_root(finder_, restriction, shifted.lo, shifted.hi);
+    }
+    found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
+    return found;
+}
+
+RootResult SurfaceTracer::polished(const Ray& ray, Interval interval, RootResult found) const {
+    if (found.status != RootStatus::hit) {
+        return found;
+    }
+    const algebra::ValueGradient vg = f_->value_gradient(to_point(ray.at(found.t)));
+    const double slope = vg.gradient[0] * ray.direction.x + vg.gradient[1] * ray.direction.y +
+                         vg.gradient[2] * ray.direction.z;
+    if (slope == 0.0 || !std::isfinite(slope) || !std::isfinite(vg.value)) {
+        return found;
+    }
+    const double step = -vg.value / slope;
+    const double t = found.t + step;
+    if (std::abs(step) <= 1e-6 * (interval.hi - interval.lo) && t >= interval.lo &&
+        t <= interval.hi) {
+        found.t = t;
+    }
+    return found;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,184 @@
+// The compile step (algebra/compiled.h) and the exact first root it offers the renderer: exact
+// root isolation (algebra/real_roots.h) against roots known in closed form.
+#include "algebra/compiled.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "algebra/error.h"
+#include "algebra/parse.h"
+#include "algebra/real_roots.h"
+#include "tests/support/test_data.h"
+
+namespace locus::algebra {
+namespace {
+
+using Status = ExactRoot::Status;
+
+TEST(CompileSurface, RejectsEquationsWithoutASurface) {
+    EXPECT_THROW(compile_surface("0"), InputError);
+    EXPECT_THROW(compile_surface("x - x + 3"), InputError);
+    try {
+        compile_surface("x^2 + w");
+        FAIL() << "an unknown variable must be a parse error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 1u);
+        EXPECT_EQ(e.column(), 7u);
+    }
+}
+
+TEST(CompileSurface, ReplacesNonReducedEquationsByTheirSquareFreePart) {
+    const CompiledPolynomial squared = compile_surface("(x^2+y^2+z^2-1)^2");
+    EXPECT_TRUE(squared.made_square_free());
+    EXPECT_EQ(squared.degree(), 2);
+    EXPECT_EQ(squared.equation(), "x^2+y^2+z^2-1");
+    const CompiledPolynomial plain = compile_surface("x^2+y^2+z^2-1");
+    EXPECT_FALSE(plain.made_square_free());
+    const CompiledPolynomial mixed = compile_surface("x^3*(y-1)^2*(z+x)");
+    EXPECT_TRUE(mixed.made_square_free());
+    EXPECT_EQ(mixed.degree(), 3);
+}
+
+TEST(CompiledPolynomial, ValueAndGradientAgreeWithExactEvaluation) {
+    const RingPtr ring = PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
+    for (int seed = 0; seed < test::seed_count(20); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+        const Polynomial f = test::random_polynomial(ring, rng, 8, 4);
+        if (f.is_constant()) {
+            continue;
+        }
+        const CompiledPolynomial compiled = compile_surface(f);
+        // Compare against the square-free polynomial the compile step kept.
+        const Polynomial kept = parse_polynomial(compiled.equation(), ring);
+        std::uniform_int_distribution<int> numerator(-20, 20);
+        const std::array<Rational, 3> point = {
+            Rational(numerator(rng), 8), Rational(numerator(rng), 8), Rational(numerator(rng), 8)};
+        const Point3 p = {fmpq_get_d(point[0].get()), fmpq_get_d(point[1].get()),
+                          fmpq_get_d(point[2].get())};
+        const double expected = fmpq_get_d(kept.evaluate(point).get());
+        const ValueGradient vg = compiled.value_gradient(p);
+        const double scale = 1e-12 * (1.0 + std::abs(expected)) * 1e3;
+        EXPECT_NEAR(compiled.value(p), expected, scale);
+        EXPECT_NEAR(vg.value, expected, scale);
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            const double partial = fmpq_get_d(kept.derivative(axis).evaluate(point).get());
+            EXPECT_NEAR(vg.gradient[axis], partial, 1e-9 * (1.0 + std::abs(partial)));
+        }
+    }
+}
+
+TEST(ExactFirstRoot, SphereAlongAnAxisIsExact) {
+    const CompiledPolynomial sphere = compile_surface("x^2+y^2+z^2-1");
+    ExactRoot r = exact_first_root(sphere, {0, 0, 5}, {0, 0, -1}, 0, 100);
+    ASSERT_EQ(r.status, Status::hit);
+    EXPECT_EQ(r.t, 4.0);  // rational roots are found exactly
+    r = exact_first_root(sphere, {0, 0, 0}, {1, 0, 0}, 0, 100);
+    EXPECT_EQ(r.t, 1.0);
+    r = exact_first_root(sphere, {3, 3, 3}, {1, 0, 0}, 0, 100);
+    EXPECT_EQ(r.status, Status::miss);
+    // Tangent ray: a double root counts.
+    r = exact_first_root(sphere, {1, 0, 5}, {0, 0, -1}, 0, 100);
+    ASSERT_EQ(r.status, Status::hit);
+    EXPECT_EQ(r.t, 5.0);
+    // Irrational root 5 − √(1 − 0.25): within one ulp.
+    r = exact_first_root(sphere, {0.5, 0, 5}, {0, 0, -1}, 0, 100);
+    EXPECT_NEAR(r.t, 5.0 - std::sqrt(0.75), 1e-15);
+}
+
+TEST(ExactFirstRoot, IntervalEndsAndOpenLowerEnd) {
+    const CompiledPolynomial sphere = compile_surface("x^2+y^2+z^2-1");
+    // Origin on the surface: t = 0 is a root; with lo_open the next root is t = 2.
+    EXPECT_EQ(exact_first_root(sphere, {-1, 0, 0}, {1, 0, 0}, 0, 10).t, 0.0);
+    const ExactRoot open = exact_first_root(sphere, {-1, 0, 0}, {1, 0, 0}, 0, 10, true);
+    ASSERT_EQ(open.status, Status::hit);
+    EXPECT_EQ(open.t, 2.0);
+    // Root exactly at the upper end, and just beyond it.
+    EXPECT_EQ(exact_first_root(sphere, {0, 0, 5}, {0, 0, -1}, 0, 4).t, 4.0);
+    EXPECT_EQ(exact_first_root(sphere, {0, 0, 5}, {0, 0, -1}, 0, 3.999).status, Status::miss);
+}
+
+TEST(ExactFirstRoot, RayInsideTheSurfaceIsReported) {
+    const CompiledPolynomial plane = compile_surface("z");
+    EXPECT_EQ(exact_first_root(plane, {0, 0, 0}, {1, 1, 0}, 0.5, 2).status,
+              Status::identically_zero);
+}
+
+// Exact isolation on polynomials with known roots, including clustered ones 2^-40 apart.
+TEST(FirstRealRoot, KnownRootsAndClusters) {
+    fmpz_poly_t p;
+    fmpz_poly_init(p);
+    fmpq_t lo, hi;
+    fmpq_init(lo);
+    fmpq_init(hi);
+    // (2t − 1)(2^41 t − 2^40 − 1): roots 1/2 and 1/2 + 2^-41.
+    fmpz_poly_t a, b;
+    fmpz_poly_init(a);
+    fmpz_poly_init(b);
+    fmpz_poly_set_coeff_si(a, 1, 2);
+    fmpz_poly_set_coeff_si(a, 0, -1);
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_one(c);
+    fmpz_mul_2exp(c, c, 41);
+    fmpz_poly_set_coeff_fmpz(b, 1, c);
+    fmpz_one(c);
+    fmpz_mul_2exp(c, c, 40);
+    fmpz_add_ui(c, c, 1);
+    fmpz_neg(c, c);
+    fmpz_poly_set_coeff_fmpz(b, 0, c);
+    fmpz_poly_mul(p, a, b);
+    fmpq_set_si(lo, 0, 1);
+    fmpq_set_si(hi, 1, 1);
+    EXPECT_EQ(first_real_root(p, lo, hi, false), 0.5);
+    fmpq_set_si(lo, 1, 2);
+    EXPECT_EQ(first_real_root(p, lo, hi, true), 0.5 + std::ldexp(1.0, -41));
+    // t² − 2 on [0, 2]: √2 to the nearest double.
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, 2, 1);
+    fmpz_poly_set_coeff_si(p, 0, -2);
+    fmpq_set_si(lo, 0, 1);
+    fmpq_set_si(hi, 2, 1);
+    EXPECT_EQ(first_real_root(p, lo, hi, false), std::sqrt(2.0));
+    // No root in [−1, 1].
+    fmpq_set_si(lo, -1, 1);
+    fmpq_set_si(hi, 1, 1);
+    EXPECT_FALSE(first_real_root(p, lo, hi, false).has_value());
+    fmpz_clear(c);
+    fmpz_poly_clear(a);
+    fmpz_poly_clear(b);
+    fmpz_poly_clear(p);
+    fmpq_clear(lo);
+    fmpq_clear(hi);
+}
+
+// Wilkinson's polynomial Π (t − k), k = 1..20: every first root after a half-integer is exact.
+TEST(FirstRealRoot, Wilkinson) {
+    fmpz_poly_t p, factor;
+    fmpz_poly_init(p);
+    fmpz_poly_init(factor);
+    fmpz_poly_one(p);
+    for (int k = 1; k <= 20; ++k) {
+        fmpz_poly_zero(factor);
+        fmpz_poly_set_coeff_si(factor, 1, 1);
+        fmpz_poly_set_coeff_si(factor, 0, -k);
+        fmpz_poly_mul(p, p, factor);
+    }
+    fmpq_t lo, hi;
+    fmpq_init(lo);
+    fmpq_init(hi);
+    fmpq_set_si(hi, 100, 1);
+    for (int k = 0; k < 20; ++k) {
+        fmpq_set_si(lo, 2 * k + 1, 2);
+        EXPECT_EQ(first_real_root(p, lo, hi, false), k + 1.0) << "after " << k + 0.5;
+    }
+    fmpq_clear(lo);
+    fmpq_clear(hi);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(factor);
+}
+
+}  // namespace
+}  // namespace locus::algebra

@@ -1,0 +1,83 @@
+// End-to-end images with closed-form answers (STYLE.md P13): a sphere's silhouette radius in
+// pixels and the shading of its centre pixel.
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace locus::render {
+namespace {
+
+Scene sphere_scene(TraceMethod method) {
+    Scene scene;
+    scene.width = scene.height = 101;  // odd: the centre pixel's centre is on the axis
+    scene.camera = CameraSpec{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 30.0};
+    Light light;
+    light.direction = glm::normalize(Vec3{0.3, 0.4, 1.0});
+    scene.lights = {light};
+    scene.surfaces.push_back({"x^2+y^2+z^2-1", "", ClipSphere{}, Material{}});
+    scene.options.method = method;
+    scene.options.shadows = false;
+    scene.options.threads = 2;
+    return scene;
+}
+
+class SphereImage : public ::testing::TestWithParam<TraceMethod> {};
+
+TEST_P(SphereImage, SilhouetteRadiusAndCentreShadingMatchTheFormulas) {
+    const Scene scene = sphere_scene(GetParam());
+    const std::vector<algebra::CompiledPolynomial> surfaces = {
+        algebra::compile_surface(scene.surfaces[0].equation)};
+    RenderStats stats;
+    const RenderedImage image = render(scene, surfaces, {}, &stats);
+    long covered = 0;
+    for (float depth : image.depth) {
+        covered += std::isfinite(depth) ? 1 : 0;
+    }
+    // Angular radius asin(1/5); the image half-height is tan(15°) at unit distance.
+    const double expected_radius =
+        std::tan(std::asin(0.2)) / std::tan(15.0 * std::numbers::pi / 180.0) * (scene.height / 2.0);
+    EXPECT_NEAR(std::sqrt(covered / std::numbers::pi), expected_radius, 0.5);
+    EXPECT_EQ(stats.hits, covered);
+    EXPECT_EQ(stats.unknown, 0);
+
+    // Centre pixel: hit at (0, 0, 1), normal +z, view +z.
+    const std::size_t centre = 50 * 101 + 50;
+    EXPECT_NEAR(image.depth[centre], 4.0, 1e-9);
+    const Material m;
+    const Vec3 l = scene.lights[0].direction;
+    const Vec3 h = glm::normalize(l + Vec3(0, 0, 1));
+    const Vec3 expected = m.ambient * m.outside + m.diffuse * l.z * m.outside +
+                          m.specular * std::pow(h.z, m.shininess);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(image.color[3 * centre + c], expected[c], 1e-5) << "channel " << c;
+    }
+    EXPECT_NEAR(image.normal[3 * centre + 2], 1.0, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, SphereImage,
+                         ::testing::Values(TraceMethod::sturm, TraceMethod::bernstein,
+                                           TraceMethod::sphere_lipschitz, TraceMethod::exact));
+
+TEST(Render, NoPixelIsNanAtSingularPoints) {
+    // The Cayley cubic's nodes and the Whitney umbrella's handle, with shadows and AO on.
+    for (const char* equation : {"4*(x^2+y^2+z^2)+16*x*y*z-1", "x^2-y^2*z"}) {
+        Scene scene;
+        scene.width = scene.height = 48;
+        scene.surfaces.push_back({equation, "", ClipSphere{}, Material{}});
+        scene.options.ambient_occlusion = true;
+        scene.options.ambient_occlusion_samples = 4;
+        scene.options.samples = 2;
+        const std::vector<algebra::CompiledPolynomial> surfaces = {
+            algebra::compile_surface(equation)};
+        const RenderedImage image = render(scene, surfaces, {});
+        for (float c : image.color) {
+            ASSERT_TRUE(std::isfinite(c)) << equation;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace locus::render

@@ -1,0 +1,310 @@
+// Every root finder of render/root_finder.h on the same cases, built from known roots: simple,
+// first among several, clustered, double (a tangent ray must be a hit), at either end,
+// Wilkinson-like, tiny and huge coefficients, degree 12, seeded random products compared to
+// their known first root, and degenerate restrictions (zero, leading zeros, non-finite).
+#include "render/root_finder.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace locus::render {
+namespace {
+
+// Number of seeds for property tests: base · LOCUS_TEST_MULTIPLIER (default 1).
+int seed_count(int base) {
+    const char* m = std::getenv("LOCUS_TEST_MULTIPLIER");
+    const int multiplier = m ? std::max(1, std::atoi(m)) : 1;
+    return base * multiplier;
+}
+
+// scale · Π (t − r) · Π (t² − 2·Re z·t + |z|²) over the real roots and the complex pairs.
+RayPolynomial from_roots(const std::vector<double>& roots,
+                         const std::vector<std::complex<double>>& pairs = {},
+                         double scale = 1.0) {
+    RayPolynomial f;
+    f.degree = 0;
+    f.c[0] = scale;
+    const auto multiply = [&f](double c0, double c1, double c2, int extra) {
+        std::array<double, kMaxDegree + 1> product{};
+        for (int k = 0; k <= f.degree; ++k) {
+            product[k] += c0 * f.c[k];
+            product[k + 1] += c1 * f.c[k];
+            if (extra == 2) {
+                product[k + 2] += c2 * f.c[k];
+            }
+        }
+        f.degree += extra;
+        f.c = product;
+    };
+    for (double r : roots) {
+        multiply(-r, 1.0, 0.0, 1);
+    }
+    for (const auto& z : pairs) {
+        multiply(std::norm(z), -2.0 * z.real(), 1.0, 2);
+    }
+    return f;
+}
+
+template <class Finder>
+class RootFinderTest : public ::testing::Test {
+protected:
+    RootResult solve(const RayPolynomial& f, double lo, double hi) const {
+        const RootResult result = Finder{}.first_root(f, lo, hi);
+        EXPECT_TRUE(std::isfinite(result.t)) << "t = " << result.t;
+        if (result.status == RootStatus::hit) {
+            EXPECT_GE(result.t, lo);
+            EXPECT_LE(result.t, hi);
+        }
+        return result;
+    }
+
+    // The first root in [lo, hi] is `expected`, within `tolerance`·max(1, hi − lo).
+    void expect_hit(const RayPolynomial& f, double lo, double hi, double expected,
+                    double tolerance = 1e-10) const {
+        const RootResult result = solve(f, lo, hi);
+        ASSERT_EQ(result.status, RootStatus::hit)
+            << "on [" << lo << ", " << hi << "], reason: " << result.reason;
+        EXPECT_NEAR(result.t, expected, tolerance * std::max(1.0, hi - lo))
+            << "on [" << lo << ", " << hi << "]";
+    }
+
+    void expect_miss(const RayPolynomial& f, double lo, double hi) const {
+        const RootResult result = solve(f, lo, hi);
+        EXPECT_EQ(result.status, RootStatus::miss)
+            << "on [" << lo << ", " << hi << "], t = " << result.t << ", reason: " << result.reason;
+    }
+
+    void expect_unknown(const RayPolynomial& f, double lo, double hi,
+                        const std::string& reason) const {
+        const RootResult result = solve(f, lo, hi);
+        EXPECT_EQ(result.status, RootStatus::unknown);
+        EXPECT_EQ(std::string(result.reason), reason);
+    }
+};
+
+struct FinderName {
+    template <class T>
+    static std::string GetName(int) {
+        return std::string(T::name);
+    }
+};
+
+using Finders = ::testing::Types<SturmRootFinder, BernsteinRootFinder, LaguerreRootFinder,
+                                 CompanionRootFinder>;
+TYPED_TEST_SUITE(RootFinderTest, Finders, FinderName);
+
+TYPED_TEST(RootFinderTest, SimpleRoots) {
+    this->expect_hit(from_roots({0.4}), 0.0, 1.0, 0.4);
+    this->expect_hit(from_roots({0.4}, {}, -3.0), 0.0, 1.0, 0.4);
+    this->expect_hit(from_roots({0.7, -1.3}), 0.0, 1.0, 0.7);
+    this->expect_hit(from_roots({0.7, -1.3}), -2.0, 0.0, -1.3);
+    this->expect_hit(from_roots({37.25, -2.0, 80.0}), 0.0, 100.0, 37.25);
+    this->expect_hit(from_roots({0.123456789}, {{0.5, 0.5}}), -1.0, 1.0, 0.123456789);
+}
+
+TYPED_TEST(RootFinderTest, FirstRootAmongSeveral) {
+    const RayPolynomial f = from_roots({0.2, 0.5, 0.9});
+    this->expect_hit(f, 0.0, 1.0, 0.2);
+    this->expect_hit(f, 0.3, 1.0, 0.5);
+    this->expect_hit(f, 0.6, 1.0, 0.9);
+    this->expect_miss(f, 0.6, 0.8);
+    this->expect_hit(from_roots({2.5, 1.5, 0.5, 3.5}, {{1.0, 0.3}}), 0.0, 4.0, 0.5);
+}
+
+TYPED_TEST(RootFinderTest, ClusteredRoots) {
+    const RayPolynomial f = from_roots({0.5, 0.5 + 1e-4, -1.0});
+    this->expect_hit(f, 0.0, 1.0, 0.5);
+    this->expect_hit(f, 0.50005, 1.0, 0.5 + 1e-4);
+    const RayPolynomial g = from_roots({0.3, 0.3 + 1e-3, 0.3 + 2e-3, 2.0});
+    this->expect_hit(g, 0.0, 1.0, 0.3);
+    this->expect_hit(g, 0.3005, 1.0, 0.301);
+}
+
+TYPED_TEST(RootFinderTest, DoubleRootIsAHit) {
+    this->expect_hit(from_roots({0.3, 0.3, -2.0}), 0.0, 1.0, 0.3, 1e-6);
+    this->expect_hit(from_roots({0.3, 0.3, 0.8}), 0.0, 1.0, 0.3, 1e-6);
+    this->expect_hit(from_roots({0.5, 0.5}, {{0.0, 1.0}}), 0.0, 1.0, 0.5, 1e-6);
+    this->expect_hit(from_roots({1.75, 1.75, -0.25}), 0.0, 4.0, 1.75, 1e-6);
+    // A double root after a simple one does not hide the simple one.
+    this->expect_hit(from_roots({0.6, 0.6, 0.2}), 0.0, 1.0, 0.2);
+    // A double root with no sign change before a simple root.
+    this->expect_hit(from_roots({0.2, 0.2, 0.6}), 0.0, 1.0, 0.2, 1e-6);
+}
+
+TYPED_TEST(RootFinderTest, RootAtEitherEnd) {
+    const RayPolynomial f = from_roots({0.3, 2.0});
+    this->expect_hit(f, 0.3, 1.0, 0.3);
+    this->expect_hit(f, -1.0, 0.3, 0.3);
+    this->expect_hit(f, 1.0, 2.0, 2.0);
+    this->expect_hit(f, 0.3, 2.0, 0.3);
+    this->expect_hit(from_roots({0.0, 5.0}), 0.0, 1.0, 0.0);
+    this->expect_hit(from_roots({1.0, -1.0}), 0.0, 1.0, 1.0);
+}
+
+TYPED_TEST(RootFinderTest, NoRoots) {
+    this->expect_miss(from_roots({}, {{0.0, 1.0}}), -10.0, 10.0);
+    this->expect_miss(from_roots({2.0, 3.0}), 0.0, 1.0);
+    this->expect_miss(from_roots({-0.5}, {{0.5, 0.1}, {0.2, 0.05}}), 0.0, 1.0);
+    RayPolynomial constant;
+    constant.degree = 0;
+    constant.c[0] = 2.0;
+    this->expect_miss(constant, 0.0, 1.0);
+}
+
+TYPED_TEST(RootFinderTest, WilkinsonLikeProduct) {
+    const RayPolynomial f = from_roots({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+    this->expect_hit(f, 0.5, 10.5, 1.0);
+    this->expect_hit(f, 1.5, 10.5, 2.0);
+    this->expect_hit(f, 7.5, 10.5, 8.0);
+    this->expect_miss(f, 10.25, 10.75);
+}
+
+TYPED_TEST(RootFinderTest, TinyAndHugeCoefficients) {
+    for (double scale : {1e-30, 1e30, -1e-30}) {
+        SCOPED_TRACE("scale " + std::to_string(scale));
+        const RayPolynomial f = from_roots({0.4, 0.6, -0.5}, {{0.1, 0.2}}, scale);
+        this->expect_hit(f, 0.0, 1.0, 0.4);
+        this->expect_hit(f, 0.5, 1.0, 0.6);
+        this->expect_miss(f, 0.65, 1.0);
+    }
+}
+
+TYPED_TEST(RootFinderTest, DegreeTwelveProduct) {
+    const std::vector<double> roots = {-2.7, -1.9, -0.45, 0.15, 0.8, 1.35, 2.2, 2.95};
+    const RayPolynomial f = from_roots(roots, {{0.5, 0.4}, {-1.0, 1.5}});
+    ASSERT_EQ(f.degree, 12);
+    this->expect_hit(f, -3.0, 3.0, -2.7);
+    this->expect_hit(f, 0.0, 3.0, 0.15);
+    this->expect_hit(f, 0.2, 1.0, 0.8);
+    this->expect_hit(f, 1.4, 3.0, 2.2);
+    this->expect_miss(f, 1.4, 2.1);
+}
+
+TYPED_TEST(RootFinderTest, RandomProductsAgainstKnownFirstRoot) {
+    for (int seed = 0; seed < seed_count(200); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> position(-3.0, 3.0);
+        const int real_count = std::uniform_int_distribution<int>(1, 8)(rng);
+        const int pair_count = std::uniform_int_distribution<int>(0, 2)(rng);
+        // Roots at least 0.05 apart, so each is conditioned well enough for 1e-10.
+        std::vector<double> roots;
+        while (static_cast<int>(roots.size()) < real_count) {
+            const double r = position(rng);
+            if (std::all_of(roots.begin(), roots.end(),
+                            [r](double s) { return std::abs(r - s) >= 0.05; })) {
+                roots.push_back(r);
+            }
+        }
+        std::vector<std::complex<double>> pairs;
+        for (int k = 0; k < pair_count; ++k) {
+            pairs.emplace_back(position(rng),
+                               std::uniform_real_distribution<double>(0.1, 2.0)(rng));
+        }
+        const RayPolynomial f = from_roots(roots, pairs, (seed % 2 ? 1.0 : -0.25));
+        // An interval whose ends are not within 1e-6 of a root.
+        double lo;
+        double hi;
+        do {
+            lo = position(rng);
+            hi = lo + std::uniform_real_distribution<double>(0.01, 6.0)(rng);
+        } while (std::any_of(roots.begin(), roots.end(), [&](double r) {
+            return std::abs(r - lo) < 1e-6 || std::abs(r - hi) < 1e-6;
+        }));
+        double expected = HUGE_VAL;
+        for (double r : roots) {
+            if (r >= lo && r <= hi) {
+                expected = std::min(expected, r);
+            }
+        }
+        if (expected == HUGE_VAL) {
+            this->expect_miss(f, lo, hi);
+            continue;
+        }
+        // Rounding the coefficients moves a simple root r by up to ~ε·Σ|c_k||r|^k / |F'(r)|;
+        // closely spaced roots of degree 12 can make that exceed 1e-10.
+        double magnitude = 0.0;
+        double slope = 0.0;
+        for (int k = f.degree; k >= 0; --k) {
+            magnitude = magnitude * std::abs(expected) + std::abs(f.c[k]);
+        }
+        for (int k = f.degree; k >= 1; --k) {
+            slope = slope * expected + k * f.c[k];
+        }
+        const double conditioning =
+            4.0 * std::numeric_limits<double>::epsilon() * magnitude / std::abs(slope);
+        this->expect_hit(f, lo, hi, expected, 1e-10 + conditioning / std::max(1.0, hi - lo));
+    }
+}
+
+TYPED_TEST(RootFinderTest, RandomDoubleRootsAreHits) {
+    for (int seed = 0; seed < seed_count(100); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> position(-3.0, 3.0);
+        const double twice = position(rng);
+        std::vector<double> roots = {twice, twice};
+        const int others = std::uniform_int_distribution<int>(0, 3)(rng);
+        for (int k = 0; k < others; ++k) {
+            const double r = position(rng);
+            if (r > twice + 0.05) {
+                roots.push_back(r);
+            }
+        }
+        const double lo = twice - std::uniform_real_distribution<double>(0.01, 2.0)(rng);
+        const double hi = twice + std::uniform_real_distribution<double>(0.01, 2.0)(rng);
+        const RayPolynomial f = from_roots(roots, {{position(rng), 0.5}});
+        // Rounding the coefficients changes F near the root by up to ~ε·Σ|c_k||r|^k, which
+        // splits the double root by ~√(8ε·Σ|c_k||r|^k / |F''(r)|): no method can do better.
+        double magnitude = 0.0;
+        double second = 0.0;
+        for (int k = f.degree; k >= 0; --k) {
+            magnitude = magnitude * std::abs(twice) + std::abs(f.c[k]);
+        }
+        for (int k = f.degree; k >= 2; --k) {
+            second = second * twice + k * (k - 1) * f.c[k];
+        }
+        const double split =
+            std::sqrt(8.0 * std::numeric_limits<double>::epsilon() * magnitude / std::abs(second));
+        this->expect_hit(f, lo, hi, twice, 1e-6 + split / std::max(1.0, hi - lo));
+    }
+}
+
+TYPED_TEST(RootFinderTest, IdenticallyZeroIsUnknown) {
+    RayPolynomial zero;
+    this->expect_unknown(zero, 0.0, 1.0, "restriction is identically zero");
+    zero.degree = 3;
+    this->expect_unknown(zero, 0.0, 1.0, "restriction is identically zero");
+}
+
+TYPED_TEST(RootFinderTest, LeadingZeroCoefficientsReduceTheDegree) {
+    RayPolynomial f = from_roots({0.5, -1.0});
+    f.degree = 5;  // c[3..5] are zero
+    this->expect_hit(f, 0.0, 1.0, 0.5);
+    this->expect_miss(f, 0.6, 1.0);
+    f.c[3] = 1e-300;  // negligible against the other terms on [0, 1]
+    this->expect_hit(f, 0.0, 1.0, 0.5);
+    RayPolynomial constant;
+    constant.degree = 2;
+    constant.c[0] = -1.0;
+    this->expect_miss(constant, 0.0, 1.0);
+}
+
+TYPED_TEST(RootFinderTest, NonFiniteInputIsUnknown) {
+    RayPolynomial f = from_roots({0.5, -1.0});
+    f.c[1] = std::numeric_limits<double>::quiet_NaN();
+    this->expect_unknown(f, 0.0, 1.0, "non-finite coefficient");
+    f.c[1] = HUGE_VAL;
+    this->expect_unknown(f, 0.0, 1.0, "non-finite coefficient");
+}
+
+}  // namespace
+}  // namespace locus::render
