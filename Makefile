@@ -19,7 +19,7 @@ build: configure
 	@cmake --build --preset $(PRESET) -j $(JOBS)
 
 demo: build
-	$(LOCUS) demo
+	$(LOCUS) demo -o locus-demo.png
 
 test: build
 	ctest --preset $(PRESET) -j $(JOBS)

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
 
 #include "algebra/error.h"
 #include "render/shading.h"
@@ -13,15 +13,33 @@ namespace locus::render {
 
 namespace {
 
-void write_channels(const std::string& path, int width, int height, int channels,
-                    OIIO::TypeDesc type, const void* data, OIIO::TypeDesc file_type) {
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-    if (!out) {
-        throw Error("cannot write '" + path + "': " + OIIO::geterror());
+using WriteFunction = int (*)(const char*, int, int, int, const void*, int, int, char*,
+                              std::size_t);
+
+// The OpenImageIO module (render/image_file_module.cpp), loaded once on first use.
+WriteFunction image_writer() {
+    static const WriteFunction writer = [] {
+        void* module = dlopen(LOCUS_IMAGE_MODULE, RTLD_NOW | RTLD_LOCAL);
+        if (module == nullptr) {
+            module = dlopen("liblocus_image_file.so", RTLD_NOW | RTLD_LOCAL);
+        }
+        if (module == nullptr) {
+            throw Error(std::string("cannot load the image writer module: ") + dlerror());
+        }
+        return reinterpret_cast<WriteFunction>(dlsym(module, "locus_write_image_file"));
+    }();
+    if (writer == nullptr) {
+        throw Error("the image writer module lacks locus_write_image_file");
     }
-    OIIO::ImageSpec spec(width, height, channels, file_type);
-    if (!out->open(path, spec) || !out->write_image(type, data) || !out->close()) {
-        throw Error("cannot write '" + path + "': " + out->geterror());
+    return writer;
+}
+
+void write_channels(const std::string& path, int width, int height, int channels, const void* data,
+                    bool data_is_float, bool file_is_half) {
+    char error[512] = "";
+    if (image_writer()(path.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
+                       file_is_half ? 1 : 0, error, sizeof error) != 0) {
+        throw Error("cannot write '" + path + "': " + error);
     }
 }
 
@@ -51,14 +69,12 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
                                      const std::vector<Aov>& aovs) {
     std::vector<std::string> written;
     if (is_float_format(path)) {
-        write_channels(path, image.width, image.height, 3, OIIO::TypeDesc::FLOAT,
-                       image.color.data(), OIIO::TypeDesc::HALF);
+        write_channels(path, image.width, image.height, 3, image.color.data(), true, true);
     } else {
         std::vector<std::uint8_t> srgb(image.color.size());
         std::transform(image.color.begin(), image.color.end(), srgb.begin(),
                        [](float c) { return to_srgb8(c); });
-        write_channels(path, image.width, image.height, 3, OIIO::TypeDesc::UINT8, srgb.data(),
-                       OIIO::TypeDesc::UINT8);
+        write_channels(path, image.width, image.height, 3, srgb.data(), false, false);
     }
     written.push_back(path);
     const std::filesystem::path base(path);
@@ -69,8 +85,8 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
         const std::vector<float>& data = aov == Aov::depth    ? image.depth
                                          : aov == Aov::normal ? image.normal
                                                               : image.work;
-        write_channels(aov_path, image.width, image.height, aov == Aov::normal ? 3 : 1,
-                       OIIO::TypeDesc::FLOAT, data.data(), OIIO::TypeDesc::FLOAT);
+        write_channels(aov_path, image.width, image.height, aov == Aov::normal ? 3 : 1, data.data(),
+                       true, false);
         written.push_back(aov_path);
     }
     return written;

@@ -84,8 +84,9 @@ RootResult LaguerreRootFinder::first_root(const RayPolynomial& f, double lo, dou
     std::frexp(largest, &exponent);
     Coefficients original;
     Coefficients a;  // deflated in place
+    const double prescale = std::ldexp(1.0, -exponent);
     for (int k = 0; k <= n; ++k) {
-        original[k] = std::ldexp(f.c[k], -exponent);
+        original[k] = f.c[k] * prescale;
         a[k] = original[k];
     }
     Coefficients original_derivative;

@@ -62,7 +62,8 @@ expect "dimension" 0 "positive-dimensional" -- "$locus" ideal dimension "$tmp/tw
 printf 'vars: x,y,z\nx\n' > "$tmp/x.ideal"
 expect "contains: no" 1 "no" -- "$locus" ideal contains "$tmp/twisted.ideal" "$tmp/x.ideal"
 expect "radical membership" 0 "yes" -- "$locus" ideal radical-member "$tmp/twisted.ideal" "y^3-z^2"
-expect "demo runs" 0 "check: ok" -- "$locus" demo
+expect "demo implicitizes and renders" 0 "verified: vanishes identically" -- "$locus" demo -o "$tmp/demo.png"
+expect "demo wrote its PNG" 0 "" -- test -s "$tmp/demo.png"
 
 expect "implicitize inline" 0 "verified" -- "$locus" implicitize -p s,t "x = s*t" "y = s" "z = t^2"
 printf 'params: t\nx = (1-t^2)/(1+t^2)\ny = 2*t/(1+t^2)\n' > "$tmp/circle.param"
@@ -76,5 +77,38 @@ expect "implicitize by resultant" 0 "method: resultant" -- \
 expect "resultant refuses space curves" 2 "plane curves" -- \
     "$locus" implicitize -p t --method resultant "x=t" "y=t^2" "z=t^3"
 
-echo "$((28 - failures)) passed, $failures failed"
+# Rendering and tracing.
+expect "render an equation to PNG" 0 "wrote $tmp/sphere.png" -- \
+    "$locus" render "x^2+y^2+z^2-1" -o "$tmp/sphere.png" --size 48x32 --samples 2 --threads 1
+expect "the PNG exists" 0 "" -- test -s "$tmp/sphere.png"
+expect "square-free part reported" 0 "rendering its square-free part x^2+y^2+z^2-1" -- \
+    "$locus" render "(x^2+y^2+z^2-1)^2" -o "$tmp/squared.png" --size 16x16
+expect "render AOVs" 0 "wrote $tmp/aov.depth.exr" -- \
+    "$locus" render "x^2-y^2*z" -o "$tmp/aov.png" --size 16x16 --aov depth,normal,work
+expect "render a parametrization" 0 "implicit equation" -- \
+    "$locus" render --param bench/data/implicit/whitney.param -o "$tmp/whitney.png" --size 16x16
+expect "render: zero polynomial" 2 "the zero polynomial defines no surface" -- \
+    "$locus" render "x-x" -o "$tmp/zero.png"
+expect "render: constant" 2 "a non-zero constant defines no surface" -- \
+    "$locus" render "3" -o "$tmp/constant.png"
+expect "render: bad equation names the column" 2 "line 1, column 5" -- \
+    "$locus" render "x^2+*y" -o "$tmp/bad.png"
+expect "render: degenerate camera" 2 "camera.eye" -- \
+    "$locus" render "x^2+y^2+z^2-1" --eye 1,1,1 --target 1,1,1 -o "$tmp/cam.png"
+expect "render: bad flag value" 2 "--size '12': expected WIDTHxHEIGHT" -- \
+    "$locus" render "x^2+y^2+z^2-1" --size 12 -o "$tmp/size.png"
+expect "render: unknown method" 2 "unknown method" -- \
+    "$locus" render "x^2+y^2+z^2-1" --method magic -o "$tmp/m.png"
+printf '[[surface]]\nequation = "x^2+y^2+z^2-1"\nradius = 2\n' > "$tmp/bad.toml"
+expect "render: unknown scene key" 2 "bad.toml: line 3, column 1: surface[1].radius: unknown key" -- \
+    "$locus" render "$tmp/bad.toml" -o "$tmp/scene.png"
+printf '[image]\nwidth = 24\nheight = 16\n[[surface]]\nequation = "x^2+y^2+z^2-1"\n[render]\nmethod = "bernstein"\n' > "$tmp/good.toml"
+expect "render a scene file" 0 "rendered 24x16, 1×1 samples, method bernstein" -- \
+    "$locus" render "$tmp/good.toml" -o "$tmp/scene.png"
+expect "trace prints hits and misses" 0 "" -- bash -c \
+    "printf '0 0 5 0 0 -1\n3 3 3 1 0 0\n' | \"$locus\" trace 'x^2+y^2+z^2-1' --method exact | diff - <(printf '4\nmiss\n')"
+expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a decimal number" -- \
+    bash -c "printf '0 0 5 0 0 -1\n0 0 5 x 0 -1\n' | \"$locus\" trace 'x^2+y^2+z^2-1'"
+
+echo "$((45 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]
