@@ -1,5 +1,6 @@
 #include "render/ray_family.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -11,7 +12,16 @@ RayFamily::RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
       restrictor_(f.terms()),
       plane_t_(glm::dot(center - camera.eye(), camera.forward())),
       center_x_(0.5 * width),
-      half_width_(0.5 * width) {}
+      half_width_(0.5 * width) {
+    const int nodes = restrictor_.degree() + 1;
+    cosines_.resize(static_cast<std::size_t>(std::max(nodes, 2)));
+    for (int m = 0; m < static_cast<int>(cosines_.size()); ++m) {
+        for (int j = 0; j < nodes; ++j) {
+            cosines_[static_cast<std::size_t>(m)][j] =
+                std::cos(std::numbers::pi * m * (j + 0.5) / nodes);
+        }
+    }
+}
 
 void RayFamily::expand_row(double y, RowExpansion& out) const {
     const int n = restrictor_.degree();
@@ -22,7 +32,7 @@ void RayFamily::expand_row(double y, RowExpansion& out) const {
     // values[j][k]: coefficient of s^k along the ray at node u_j = cos(π(j + ½)/nodes).
     std::array<RayPolynomial, kMaxDegree + 1> values;
     for (int j = 0; j < nodes; ++j) {
-        const double u = std::cos(std::numbers::pi * (j + 0.5) / nodes);
+        const double u = cosines_[1][j];
         const Vec3 d = camera_->direction(center_x_ + u * half_width_, y);
         values[j] = restrictor_.restrict_to(camera_->eye() + plane_t_ * d, d);
     }
@@ -34,7 +44,7 @@ void RayFamily::expand_row(double y, RowExpansion& out) const {
         for (int m = 0; m < nodes; ++m) {
             double sum = 0.0;
             for (int j = 0; j < nodes; ++j) {
-                sum += values[j].c[k] * std::cos(std::numbers::pi * m * (j + 0.5) / nodes);
+                sum += values[j].c[k] * cosines_[static_cast<std::size_t>(m)][j];
             }
             chebyshev[m] = (m == 0 ? 1.0 : 2.0) * sum / nodes;
         }

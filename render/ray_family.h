@@ -53,6 +53,9 @@ class RayFamily {
     LineRestrictor restrictor_;
     double plane_t_;
     double center_x_, half_width_;
+    // cosines[m][j] = cos(π·m·(j + ½)/(n + 1)): the Chebyshev nodes (m = 1) and the discrete
+    // cosine transform, computed once per frame rather than once per row.
+    std::vector<std::array<double, kMaxDegree + 1>> cosines_;
 };
 
 }  // namespace locus::render

@@ -110,7 +110,8 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
     };
     // The root in [a, b] when G(a)·G(b) < 0 (Horner values).
     const auto refine = [&](double a, double b, double ga, double gb) {
-        return detail::hit(detail::refine_root(u, false, a, b, ga, gb, work), work);
+        const double t = detail::refine_root(u, false, a, b, ga, gb, work);
+        return detail::hit(t, work);
     };
 
     // The piece being examined: [a, a + 2^-depth] with Bernstein coefficients `piece`; pending

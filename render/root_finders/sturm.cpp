@@ -37,8 +37,9 @@ constexpr double kRemainderZero = 1e-11;
 // zero within rounding). The check is by value, so a large threshold costs time, not accuracy.
 constexpr double kRemainderSuspect = 1e-5;
 
-// Bisections allowed on counts; the unit interval is exhausted in doubles long before.
-constexpr int kMaxBisections = 80;
+// Effort allowed per ray (bisections on counts and refinement steps) before the method gives
+// up with RootStatus::unknown; one isolation exhausts the unit interval in doubles in ~50.
+constexpr int kMaxWork = 200;
 
 // Tries of the root of G' as the tangent point of an even-multiplicity root, and how far (in s)
 // the last try may move from the bracket found by counts.
@@ -49,7 +50,7 @@ constexpr double kTangentReach = 1e-4;
 // coefficients[offset[i] .. offset[i] + degree[i]].
 struct SturmSequence {
     std::array<double, (kMaxDegree + 1) * (kMaxDegree + 2) / 2> coefficients;
-    std::array<int, kMaxDegree + 2> offset;
+    std::array<int, kMaxDegree + 3> offset;
     std::array<int, kMaxDegree + 2> degree;
     int size = 0;
     int suspect = -1;  // a member suspected to be a near-common factor, see kRemainderSuspect
@@ -58,45 +59,66 @@ struct SturmSequence {
     double* member(int i) { return coefficients.data() + offset[i]; }
 };
 
-// Appends sign·r (degree d) normalised to max |coefficient| = 1.
-void append(SturmSequence& s, const double* r, int d, double sign) {
-    const int i = s.size;
-    s.offset[i] = i == 0 ? 0 : s.offset[i - 1] + s.degree[i - 1] + 1;
-    s.degree[i] = d;
-    double largest = 0.0;
-    for (int k = 0; k <= d; ++k) {
-        largest = std::max(largest, std::abs(r[k]));
-    }
+// Makes the coefficients already written at member `size` (degree d, largest magnitude
+// `largest`) a member: multiplies them by sign/largest.
+void close_member(SturmSequence& s, int d, double largest, double sign) {
     const double factor = sign / largest;
-    double* p = s.member(i);
+    double* p = s.member(s.size);
     for (int k = 0; k <= d; ++k) {
-        p[k] = r[k] * factor;
+        p[k] *= factor;
     }
+    s.degree[s.size] = d;
     ++s.size;
+    s.offset[s.size] = s.offset[s.size - 1] + d + 1;
 }
 
 void build_sequence(const Coefficients& g, int n, SturmSequence& s) {
     s.size = 0;
     s.suspect = -1;
-    append(s, g.data(), n, 1.0);
-    Coefficients r;
-    detail::derivative(g.data(), n, r.data());
-    append(s, r.data(), n - 1, 1.0);
+    s.offset[0] = 0;
+    double* p = s.member(0);
+    double largest = 0.0;
+    for (int k = 0; k <= n; ++k) {
+        p[k] = g[k];
+        largest = std::max(largest, std::abs(g[k]));
+    }
+    close_member(s, n, largest, 1.0);
+    p = s.member(1);
+    largest = 0.0;
+    for (int k = 1; k <= n; ++k) {
+        p[k - 1] = k * g[k];
+        largest = std::max(largest, std::abs(p[k - 1]));
+    }
+    close_member(s, n - 1, largest, 1.0);
     double smallest_remainder = kRemainderSuspect;
+    Coefficients scratch;
     while (s.degree[s.size - 1] > 0) {
         const double* previous = s.member(s.size - 2);
         const double* divisor = s.member(s.size - 1);
         const int d1 = s.degree[s.size - 2];
         const int d2 = s.degree[s.size - 1];
-        std::copy(previous, previous + d1 + 1, r.begin());
+        double* r = s.member(s.size);  // the remainder is written in place of the next member
         const double inverse_lead = 1.0 / divisor[d2];
         double largest_quotient = 1.0;
-        for (int k = d1; k >= d2; --k) {
-            const double q = r[k] * inverse_lead;
-            largest_quotient = std::max(largest_quotient, std::abs(q));
-            for (int j = 0; j < d2; ++j) {
-                r[k - d2 + j] -= q * divisor[j];
+        if (d1 == d2 + 1) {
+            // The usual case, a linear quotient q₁x + q₀: one fused pass.
+            const double q1 = previous[d1] * inverse_lead;
+            const double q0 = (previous[d2] - q1 * divisor[d2 - 1]) * inverse_lead;
+            largest_quotient = std::max({1.0, std::abs(q1), std::abs(q0)});
+            r[0] = previous[0] - q0 * divisor[0];
+            for (int j = 1; j < d2; ++j) {
+                r[j] = previous[j] - q1 * divisor[j - 1] - q0 * divisor[j];
             }
+        } else {
+            std::copy(previous, previous + d1 + 1, scratch.begin());
+            for (int k = d1; k >= d2; --k) {
+                const double q = scratch[k] * inverse_lead;
+                largest_quotient = std::max(largest_quotient, std::abs(q));
+                for (int j = 0; j < d2; ++j) {
+                    scratch[k - d2 + j] -= q * divisor[j];
+                }
+            }
+            std::copy(scratch.begin(), scratch.begin() + d2, r);
         }
         // Members have max |coefficient| 1, so the terms of the division are ≤ the quotient.
         const double zero = kRemainderZero * largest_quotient;
@@ -107,7 +129,7 @@ void build_sequence(const Coefficients& g, int n, SturmSequence& s) {
         if (d < 0) {
             break;  // a (near) common factor: the sequence ends at the divisor
         }
-        double largest = 0.0;
+        largest = 0.0;
         for (int k = 0; k <= d; ++k) {
             largest = std::max(largest, std::abs(r[k]));
         }
@@ -115,7 +137,7 @@ void build_sequence(const Coefficients& g, int n, SturmSequence& s) {
             smallest_remainder = largest / largest_quotient;
             s.suspect = s.size - 1;
         }
-        append(s, r.data(), d, -1.0);
+        close_member(s, d, largest, -1.0);
     }
 }
 
@@ -163,61 +185,32 @@ int sign_changes_at_one(const SturmSequence& seq) {
     return changes;
 }
 
-// The first root of G in (0, 1] by Sturm counts, as t, or NaN when the counts find none.
-double first_counted_root(const SturmSequence& seq, const detail::UnitRestriction& u, int& work) {
+// The root counted on [a, b] (va sign changes at a) when G has the same sign at both ends: a
+// root of even multiplicity, which is a simple root of G' — or counts spoiled by rounding (a
+// member with a small leading coefficient amplifies it) that hide two close simple roots or
+// merge a close complex pair into a "root". Bisect on counts; whenever G' changes sign on the
+// bracket, look at its root c: G(c) of the other sign than G(a) reveals a sign change in
+// [a, c], and G touching zero at c is the tangent, far better conditioned than the counts near
+// it. Returns t, or NaN when neither is found.
+double even_root(const SturmSequence& seq, const detail::UnitRestriction& u, double a, double b,
+                 int va, int& work) {
     const Coefficients& g = u.g;
     const int n = u.degree;
-    double a = 0.0;
-    double b = 1.0;
-    int va = sign_changes_at_zero(seq);
-    int vb = sign_changes_at_one(seq);
-    if (va - vb <= 0) {
-        return NAN;
-    }
     const double tol = detail::unit_tolerance(u.w);
-    // Isolate the first distinct root: keep the left half whenever it holds a root.
-    while (va - vb > 1) {
-        if (b - a <= tol || work >= kMaxBisections) {
-            return detail::from_unit(0.5 * (a + b), u.lo, u.hi);  // a cluster
-        }
-        const double m = 0.5 * (a + b);
-        const int vm = sign_changes(seq, m);
-        ++work;
-        if (va - vm >= 1) {
-            b = m;
-            vb = vm;
-        } else {
-            a = m;
-            va = vm;
-        }
-    }
-    const double ga = detail::horner(g.data(), n, a);
-    const double gb = detail::horner(g.data(), n, b);
-    if (gb == 0.0) {
-        return detail::from_unit(b, u.lo, u.hi);
-    }
-    if ((ga < 0.0) != (gb < 0.0) && ga != 0.0) {
-        return detail::refine_root(u, false, a, b, ga, gb, work);
-    }
-    // One distinct root and no sign change: even multiplicity, a simple root of G' — or counts
-    // spoiled by rounding (a member with a small leading coefficient amplifies it), hiding two
-    // close simple roots. Bisect on counts; whenever G' changes sign on the bracket, look at
-    // its root c: G(c) of the other sign than G(a) reveals a sign change in [a, c], and G
-    // touching zero at c is the tangent, far better conditioned than the counts near it.
     Coefficients dg;
     detail::derivative(g.data(), n, dg.data());
     int attempts = 0;
-    while (b - a > tol && work < kMaxBisections) {
+    while (b - a > tol && work < kMaxWork) {
         const double da = detail::horner(dg.data(), n - 1, a);
         const double db = detail::horner(dg.data(), n - 1, b);
         if (attempts < kMaxTangentAttempts && da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)) {
             ++attempts;
             const double t = detail::refine_root(u, true, a, b, da, db, work);
             const double c = std::clamp((t - u.lo) / u.w, a, b);
-            const double g_a = detail::horner(g.data(), n, a);
-            const double g_c = detail::horner(g.data(), n, c);
-            if (g_a != 0.0 && g_c != 0.0 && (g_a < 0.0) != (g_c < 0.0)) {
-                return detail::refine_root(u, false, a, c, g_a, g_c, work);
+            const double ga = detail::horner(g.data(), n, a);
+            const double gc = detail::horner(g.data(), n, c);
+            if (ga != 0.0 && gc != 0.0 && (ga < 0.0) != (gc < 0.0)) {
+                return detail::refine_root(u, false, a, c, ga, gc, work);
             }
             if (detail::touches_zero(u, t)) {
                 return t;
@@ -239,7 +232,59 @@ double first_counted_root(const SturmSequence& seq, const detail::UnitRestrictio
     return std::abs(t - detail::from_unit(m, u.lo, u.hi)) <= kTangentReach * u.w &&
                    t >= u.lo && t <= u.hi && detail::touches_zero(u, t)
                ? t
-               : detail::from_unit(m, u.lo, u.hi);
+               : NAN;
+}
+
+// The first root of G in (0, 1] by Sturm counts, as t, or NaN when the counts find none.
+// Sets `limit_reached` when kMaxWork runs out.
+double first_counted_root(const SturmSequence& seq, const detail::UnitRestriction& u, int& work,
+                          bool& limit_reached) {
+    const Coefficients& g = u.g;
+    const int n = u.degree;
+    const double tol = detail::unit_tolerance(u.w);
+    double a = 0.0;
+    int va = sign_changes_at_zero(seq);
+    const int v_end = sign_changes_at_one(seq);
+    while (va - v_end > 0) {
+        // Isolate the first distinct root in (a, 1]: keep the left half whenever it holds one.
+        double b = 1.0;
+        int vb = v_end;
+        while (va - vb > 1) {
+            if (work >= kMaxWork) {
+                limit_reached = true;
+                return NAN;
+            }
+            if (b - a <= tol) {
+                return detail::from_unit(0.5 * (a + b), u.lo, u.hi);  // a cluster
+            }
+            const double m = 0.5 * (a + b);
+            const int vm = sign_changes(seq, m);
+            ++work;
+            if (va - vm >= 1) {
+                b = m;
+                vb = vm;
+            } else {
+                a = m;
+                va = vm;
+            }
+        }
+        const double ga = detail::horner(g.data(), n, a);
+        const double gb = detail::horner(g.data(), n, b);
+        if (gb == 0.0) {
+            return detail::from_unit(b, u.lo, u.hi);
+        }
+        if ((ga < 0.0) != (gb < 0.0) && ga != 0.0) {
+            return detail::refine_root(u, false, a, b, ga, gb, work);
+        }
+        const double t = even_root(seq, u, a, b, va, work);
+        if (!std::isnan(t)) {
+            return t;
+        }
+        // Nothing real on [a, b] after all: look beyond it.
+        a = b;
+        va = vb;
+    }
+    return NAN;
 }
 
 // The first tangent point t ≤ limit among the real roots of the suspected near-common factor
@@ -290,7 +335,11 @@ RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double
     if (u.degree > 0) {
         SturmSequence seq;
         build_sequence(u.g, u.degree, seq);
-        t = first_counted_root(seq, u, work);
+        bool limit_reached = false;
+        t = first_counted_root(seq, u, work, limit_reached);
+        if (limit_reached) {
+            return detail::unknown("sturm bisection limit reached", work);
+        }
         if (seq.suspect >= 0) {
             // A tangent before the counted root wins; so does one just after it when the
             // counted root is not a root in the better basis (rounding noise of G around the

@@ -333,7 +333,8 @@ inline double refine_root(const UnitRestriction& u, bool of_derivative, double a
                           double ga, double gb, int& work) {
     BothBases bases;
     make_bases(u, of_derivative, bases);
-    if (original_rounds_less(bases, u, 0.5 * (a + b))) {
+    // With lo = 0 the two bases differ only by the scaling of the coefficients.
+    if (u.lo != 0.0 && original_rounds_less(bases, u, 0.5 * (a + b))) {
         const double ta = from_unit(a, u.lo, u.hi);
         const double tb = from_unit(b, u.lo, u.hi);
         const double fa = horner(bases.f, bases.f_degree, ta);
