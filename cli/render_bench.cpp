@@ -7,7 +7,8 @@
 // hit/miss disagrees with `exact`, when the method could not decide, or when the hit distance
 // differs by more than 1e-6 × the clip radius. When surf (Debian's surf-alggeo) is installed,
 // it draws the same surface at the same size in the same run (its own camera and clipping,
-// start-up excluded) for a speed reference.
+// start-up excluded) for a speed reference, set beside `render s`: the whole picture as
+// `locus render` makes it (sturm, shading without shadows, one sample, all cores).
 #include "cli/render_bench.h"
 
 #include <unistd.h>
@@ -24,6 +25,7 @@
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
 #include "render/primary_rays.h"
+#include "render/renderer.h"
 #include "render/scene.h"
 
 namespace locus::cli {
@@ -150,10 +152,12 @@ int run_render_bench(const RenderBenchArgs& args) {
     const bool with_surf = args.surf != "off" && on_path(args.surf);
     if (args.csv) {
         std::cout << "case,degree,method,rays,seconds,rays_per_second,work_per_ray,wrong_rays,"
-                     "wrong_share,unknown_rays,max_depth_error,mean_depth_error,surf_seconds\n";
+                     "wrong_share,unknown_rays,max_depth_error,mean_depth_error,render_seconds,"
+                     "surf_seconds\n";
     } else {
-        std::printf("%-18s %3s %-17s %10s %9s %8s %8s %11s %11s %9s\n", "case", "deg", "method",
-                    "rays/s", "work/ray", "wrong", "wrong %", "max err", "mean err", "surf s");
+        std::printf("%-18s %3s %-17s %10s %9s %8s %8s %11s %11s %9s %9s\n", "case", "deg", "method",
+                    "rays/s", "work/ray", "wrong", "wrong %", "max err", "mean err", "render s",
+                    "surf s");
     }
     for (const SuiteSurface& s : suite) {
         const algebra::CompiledPolynomial f = algebra::compile_surface(s.equation);
@@ -166,6 +170,19 @@ int run_render_bench(const RenderBenchArgs& args) {
         const render::PrimaryRays reference = render::trace_primary_rays(
             f, region, camera, args.size, args.size, render::TraceMethod::exact, 0);
         const double surf_seconds = with_surf ? time_surf(args.surf, s, args.size) : -1.0;
+        // The whole picture as `locus render` makes it (default method, Blinn–Phong, no
+        // shadows, one sample, all cores): the figure to set beside surf's.
+        scene.options.shadows = false;
+        const std::vector<algebra::CompiledPolynomial> compiled = {f};
+        double render_seconds = 0.0;
+        int render_runs = 0;
+        do {
+            render::RenderStats stats;
+            render::render(scene, compiled, {}, &stats);
+            render_seconds += stats.seconds;
+            ++render_runs;
+        } while (render_seconds < args.min_seconds && render_runs < 50);
+        render_seconds /= render_runs;
         const double tolerance = 1e-6 * s.clip_radius;
         for (render::TraceMethod method : methods) {
             render::PrimaryRays traced;
@@ -209,12 +226,14 @@ int run_render_bench(const RenderBenchArgs& args) {
                 std::cout << s.name << "," << f.degree() << "," << render::to_string(method) << ","
                           << traced.hits.size() << "," << seconds << "," << rays / seconds << ","
                           << work / rays << "," << wrong << "," << wrong / rays << "," << unknown
-                          << "," << max_error << "," << mean_error << "," << surf_seconds << "\n";
+                          << "," << max_error << "," << mean_error << "," << render_seconds << ","
+                          << surf_seconds << "\n";
             } else {
                 std::printf(
-                    "%-18s %3d %-17s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %9s\n", s.name.c_str(),
-                    f.degree(), std::string(render::to_string(method)).c_str(), rays / seconds,
-                    work / rays, wrong, 100.0 * wrong / rays, max_error, mean_error,
+                    "%-18s %3d %-17s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %9.4f %9s\n",
+                    s.name.c_str(), f.degree(), std::string(render::to_string(method)).c_str(),
+                    rays / seconds, work / rays, wrong, 100.0 * wrong / rays, max_error, mean_error,
+                    render_seconds,
                     surf_seconds > 0 ? std::to_string(surf_seconds).substr(0, 6).c_str() : "-");
             }
             std::cout.flush();

@@ -120,7 +120,12 @@ TEST_P(EveryMethod, TangentRayToASphereIsAHit) {
     const SurfaceTracer tracer(f, GetParam(), 2.0);
     const RootResult hit = tracer.first_hit({{1.0, 0.0, 5.0}, {0.0, 0.0, -1.0}}, {0.0, 10.0});
     if (GetParam() == TraceMethod::sphere_gradient) {
-        GTEST_SKIP() << "an estimate: documented to approach tangent roots only slowly";
+        // An estimate, documented to approach tangent roots only slowly: it may give up, but a
+        // hit it reports must be at the tangent point.
+        if (hit.status == RootStatus::hit) {
+            EXPECT_NEAR(hit.t, 5.0, 1e-2);
+        }
+        return;
     }
     ASSERT_EQ(hit.status, RootStatus::hit);
     EXPECT_NEAR(hit.t, 5.0, 1e-4);
