@@ -69,6 +69,13 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
         found = sphere_trace_lipschitz(restriction, shifted, 1e-9 * scale_ / speed);
     } else {
         found = first_root(finder_, restriction, shifted.lo, shifted.hi);
+        if (found.status == RootStatus::unknown && method_ != TraceMethod::bernstein) {
+            // The method could not decide (an inconsistent Sturm chain, an iteration cap):
+            // Bernstein subdivision answers the same question from the same coefficients.
+            const int work = found.work;
+            found = BernsteinRootFinder{}.first_root(restriction, shifted.lo, shifted.hi);
+            found.work += work;
+        }
     }
     found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
     return found;

@@ -5,7 +5,9 @@
 // per-frame RayFamily) or compute it with the LineRestrictor. Their root is then polished by
 // one Newton step on f itself, evaluated directly at the point, which removes the rounding the
 // restriction's coefficients carry. The step is taken only when it is small against the
-// interval, so a double root (where ∇f·d ≈ 0) is left as found.
+// interval, so a double root (where ∇f·d ≈ 0) is left as found. When a univariate method cannot
+// decide (RootStatus::unknown: an inconsistent floating-point Sturm chain, an iteration cap),
+// Bernstein subdivision answers from the same coefficients; the work of both is counted.
 #pragma once
 
 #include "algebra/compiled.h"

@@ -5,18 +5,22 @@
 // the Bernstein basis of degree n. On a piece [a, a + h] the number V of sign changes of the
 // Bernstein coefficients bounds the number of roots inside and has the same parity (Lane &
 // Riesenfeld, "Bounds on a polynomial", BIT 21 (1981) 112–117): V = 0 — no root; V = 1 —
-// exactly one, refined by Illinois on G; V ≥ 2 — split at the midpoint by de Casteljau and look
-// at the left half first, so the first root found is the first root. An explicit stack holds
-// the pending right halves (one per level), so nothing is allocated.
+// exactly one, refined by regula falsi (detail::regula_falsi); V ≥ 2 — look at the control
+// polygon of G' (differences of the coefficients): G monotone on the piece has at most one
+// root, G with one critical point c at most two, found from the signs of G(a), G(c), G(b) and
+// refined the same way. Only pieces where G' has several sign changes are split at the
+// midpoint by de Casteljau, left half first, so the first root found is the first root. An
+// explicit stack holds the pending right halves (one per level): nothing is allocated.
 //
-// Even-multiplicity roots never produce a sign change of G, so they are caught through the
-// control polygon instead: a piece whose coefficients come within the rounding noise of G
-// (kTouchesZero) keeps being subdivided, and a piece narrower than the root tolerance whose
-// polygon still reaches zero is a hit at its midpoint; an end coefficient within the noise is a
-// hit at that end.
+// Even-multiplicity roots never produce a sign change of G, so they are caught as critical
+// points where G touches zero within rounding (detail::touches_zero), and pieces whose
+// coefficients come within the rounding noise of G (kTouchFactor) are examined rather than
+// dropped. A piece narrower than the root tolerance that still has to be split is a cluster
+// of roots and a hit at its midpoint.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "render/root_finder.h"
 #include "render/root_finders/detail/univariate.h"
@@ -26,15 +30,16 @@ namespace {
 
 using detail::Coefficients;
 
-// Subdivision depth limit; the root tolerance (≥ 8ε in s) is reached by depth 50.
+// Subdivision depth limit: the root tolerance (≥ 8ε in s) is reached by depth 50, so the limit
+// only bounds the stack.
 constexpr int kMaxDepth = 56;
+
+// Width, relative to the piece, to which a critical point is located before G's sign there is
+// looked at; only a possible tangent needs it to the root tolerance.
+constexpr double kCoarseCritical = 1e-6;
 
 // Total subdivisions allowed for one ray before the method gives up (RootStatus::unknown).
 constexpr int kMaxSubdivisions = 2000;
-
-// Coefficient size, per unit of degree, that counts as touching zero: G is normalised to
-// max |g_k| = 1, so its rounding noise is ~(n + 1)·ε; this leaves a margin of ~500.
-constexpr double kTouchesZero = 1e-13;
 
 // 1 / C(n, k) for n, k ≤ kMaxDegree (C(40, 20) ≈ 1.4e11 is exact in a double).
 constexpr auto kInverseBinomial = [] {
@@ -108,10 +113,61 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
     const auto touches_at = [&](double s) {
         return detail::touches_zero(u, detail::from_unit(s, lo, hi));
     };
-    // The root in [a, b] when G(a)·G(b) < 0 (Horner values).
+    // The root in [a, b] when G(a)·G(b) < 0 (Horner values), NaN when the basis that rounds
+    // less sees no sign change.
     const auto refine = [&](double a, double b, double ga, double gb) {
-        const double t = detail::refine_root(u, false, a, b, ga, gb, work);
-        return detail::hit(t, work);
+        return detail::refine_root(u, false, a, b, ga, gb, work);
+    };
+
+    // G on [a, b] (width h, values ga, gb) with one critical point, located roughly at tc:
+    // monotone on [a, c] and on [c, b]. A rough c is enough to bracket a root in [a, c], or to
+    // rule out a tangent when |G(c)| exceeds what the error in c can hide (|G''| ≤ n²(n+1) on
+    // [0, 1] as max |g_k| = 1); only a possible tangent needs c to the tolerance. Empty when
+    // the piece holds neither a root nor a tangent.
+    const auto unimodal = [&](double a, double b, double h, double ga, double gb, double da,
+                              double db, double tc) -> std::optional<RootResult> {
+        double c = std::clamp((tc - lo) / u.w, a, b);
+        double gc = detail::horner(g.data(), n, c);
+        const auto sign_change = [](double x, double y) {
+            return x != 0.0 && y != 0.0 && (x < 0.0) != (y < 0.0);
+        };
+        if (sign_change(ga, gc)) {
+            if (const double t = refine(a, c, ga, gc); !std::isnan(t)) {
+                return detail::hit(t, work);
+            }
+        }
+        const double coarse = kCoarseCritical * h;
+        const double hidden = 0.5 * n * n * (n + 1.0) * coarse * coarse / u.kappa;
+        if (gb != 0.0 && (gb < 0.0) == (gc < 0.0) && !detail::touches_zero(u, tc, hidden) &&
+            !touches_at(a) && !touches_at(b)) {
+            return std::nullopt;
+        }
+        if (const double precise = detail::refine_root(u, true, a, b, da, db, work);
+            !std::isnan(precise)) {
+            tc = precise;
+            c = std::clamp((tc - lo) / u.w, a, b);
+            gc = detail::horner(g.data(), n, c);
+        }
+        if (sign_change(ga, gc)) {
+            if (const double t = refine(a, c, ga, gc); !std::isnan(t)) {
+                return detail::hit(t, work);
+            }
+        }
+        if (detail::touches_zero(u, tc)) {
+            return detail::hit(tc, work);  // even multiplicity: a tangent
+        }
+        if (touches_at(a)) {
+            return at_end(a, h);
+        }
+        if (sign_change(gc, gb)) {
+            if (const double t = refine(c, b, gc, gb); !std::isnan(t)) {
+                return detail::hit(t, work);
+            }
+        }
+        if (touches_at(b)) {
+            return at_end(b, h);
+        }
+        return std::nullopt;
     };
 
     // The piece being examined: [a, a + 2^-depth] with Bernstein coefficients `piece`; pending
@@ -141,7 +197,10 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
             const double ga = detail::horner(g.data(), n, a);
             const double gb = detail::horner(g.data(), n, b);
             if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
-                return refine(a, b, ga, gb);
+                const double t = refine(a, b, ga, gb);
+                if (!std::isnan(t)) {
+                    return detail::hit(t, work);
+                }
             }
             // Rounding disagrees with the polygon: a root within noise of an end, or a polygon
             // blurred by rounding that a closer look settles.
@@ -163,7 +222,10 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
             const double gb = detail::horner(g.data(), n, b);
             if (turns == 0) {
                 if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
-                    return refine(a, b, ga, gb);
+                    const double t = refine(a, b, ga, gb);
+                    if (!std::isnan(t)) {
+                        return detail::hit(t, work);
+                    }
                 }
                 if (touches_at(a)) {
                     return at_end(a, width);
@@ -174,28 +236,15 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
             } else if (turns == 1) {
                 const double da = detail::horner(dg.data(), n - 1, a);
                 const double db = detail::horner(dg.data(), n - 1, b);
-                if (da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)) {
-                    // One critical point c: G is monotone on [a, c] and on [c, b].
-                    const double tc = detail::refine_root(u, true, a, b, da, db, work);
-                    const double c = std::clamp((tc - lo) / u.w, a, b);
-                    const double gc = detail::horner(g.data(), n, c);
-                    if (ga != 0.0 && (gc < 0.0) != (ga < 0.0)) {
-                        return gc == 0.0 ? at(c) : refine(a, c, ga, gc);
-                    }
-                    if (detail::touches_zero(u, tc)) {
-                        return detail::hit(tc, work);  // an even-multiplicity root: a tangent
-                    }
-                    if (touches_at(a)) {
-                        return at_end(a, width);
-                    }
-                    if ((gb < 0.0) != (gc < 0.0)) {
-                        return gb == 0.0 ? at(b) : refine(c, b, gc, gb);
-                    }
-                    if (touches_at(b)) {
-                        return at_end(b, width);
-                    }
-                } else {
+                const double tc =
+                    da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)
+                        ? detail::refine_root(u, true, a, b, da, db, work, kCoarseCritical * width)
+                        : NAN;
+                if (std::isnan(tc)) {
                     subdivide = true;  // rounding blurs the critical point; look closer
+                } else if (const std::optional<RootResult> r =
+                               unimodal(a, b, width, ga, gb, da, db, tc)) {
+                    return *r;
                 }
             } else {
                 subdivide = true;
@@ -224,9 +273,8 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
         a = stack_a[top];
         depth = stack_depth[top];
     }
-    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi)
-               ? detail::hit(hi, work)
-               : detail::miss(work);
+    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi) ? detail::hit(hi, work)
+                                                                             : detail::miss(work);
 }
 
 }  // namespace locus::render

@@ -123,7 +123,8 @@ RootResult CompanionRootFinder::first_root(const RayPolynomial& f, double lo, do
             const double t1 = t(i, i + 1);
             const double scale = std::max({std::abs(p), std::abs(t0), std::abs(t1)});
             const double imaginary =
-                scale * std::sqrt(std::abs((p / scale) * (p / scale) + (t0 / scale) * (t1 / scale)));
+                scale *
+                std::sqrt(std::abs((p / scale) * (p / scale) + (t0 / scale) * (t1 / scale)));
             consider(t(i + 1, i + 1) + p, imaginary);
             i += 2;
         }

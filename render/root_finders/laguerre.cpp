@@ -3,12 +3,14 @@
 //
 // Follows Numerical Recipes (Press, Teukolsky, Vetterling & Flannery, 3rd ed., §9.5.3, `laguer`
 // and `zroots`): each root is found from 0 with the Laguerre step, stopping at the rounding
-// level of the evaluation and breaking limit cycles with fractional steps every kCycle
-// iterations; roots are then divided out. Because F is real, a root with a clearly non-zero
-// imaginary part is deflated together with its conjugate by a real quadratic factor, so the
-// deflated polynomial stays real and half the roots come for free. A root counts as real when
-// |Im x| ≤ kRealImaginary·(|x| + 1): a double root of F perturbed by rounding becomes a pair
-// r ± iδ with δ ~ √ε, which must still be a hit (a tangent ray).
+// level of the evaluation (or when the step falls below the spacing of doubles: rounding can
+// make the iterate alternate between neighbours) and breaking limit cycles with fractional
+// steps every kCycle iterations; roots are then divided out, the smallest first, which keeps
+// forward deflation stable. Because F is real, a root whose imaginary part exceeds
+// detail::kRealImaginary·(|x| + 1) is deflated together with its conjugate by a real quadratic
+// factor, so the deflated polynomial stays real and half the roots come for free. Every root
+// with a small imaginary part is a candidate (detail::polish_real_root): a double root of F
+// perturbed by rounding becomes a pair r ± iδ with δ ~ √ε, which must still be a hit.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,13 +25,14 @@ namespace {
 using Complex = std::complex<double>;
 using detail::Coefficients;
 
-constexpr int kCycle = 10;  // a fractional step every kCycle iterations
-constexpr int kMaxIterations = 8 * kCycle;
+constexpr int kCycle = 10;                  // a fractional step every kCycle iterations
+constexpr int kMaxIterations = 4 * kCycle;  // per start
+constexpr int kStarts = 5;                  // 0, then points on the circle of the root moduli
 
 // One root of the real polynomial a (degree m ≥ 2) by Laguerre's method from x; returns false
 // when kMaxIterations pass without convergence. Adds iterations to `work`.
-bool laguerre(const double* a, int m, Complex& x, int& work) {
-    static constexpr double kFractions[] = {0.5, 0.25, 0.75, 0.13, 0.38, 0.62, 0.88, 1.0};
+bool laguerre_from(const double* a, int m, Complex& x, int& work) {
+    static constexpr double kFractions[] = {0.5, 0.25, 0.75, 0.13};
     for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
         ++work;
         // p(x), p'(x) and p''(x)/2 by Horner, with the rounding bound of p(x).
@@ -50,7 +53,8 @@ bool laguerre(const double* a, int m, Complex& x, int& work) {
         const Complex g = dp / p;
         const Complex g2 = g * g;
         const Complex h = g2 - 2.0 * half_ddp / p;
-        const Complex root = std::sqrt(static_cast<double>(m - 1) * (static_cast<double>(m) * h - g2));
+        const Complex root =
+            std::sqrt(static_cast<double>(m - 1) * (static_cast<double>(m) * h - g2));
         const Complex plus = g + root;
         const Complex minus = g - root;
         const double largest = std::max(std::abs(plus), std::abs(minus));
@@ -63,6 +67,21 @@ bool laguerre(const double* a, int m, Complex& x, int& work) {
             return true;  // converged to rounding (possibly alternating between neighbours)
         }
         x = iteration % kCycle != 0 ? next : x - kFractions[iteration / kCycle - 1] * step;
+    }
+    return false;
+}
+
+// One root of a (degree m ≥ 2), from 0 first as Numerical Recipes does, so that the smallest
+// roots come first. Where F is very flat at 0 (F ≈ a₀ + a_m·x^m) the Laguerre step from 0 is
+// huge and the iterate can bounce between 0 and far away forever; the later starts lie on the
+// circle |x| = |a₀/a_m|^(1/m), the geometric mean of the root moduli, at spread-out angles.
+bool laguerre(const double* a, int m, Complex& x, int& work) {
+    const double radius = std::pow(std::abs(a[0] / a[m]), 1.0 / m);
+    for (int start = 0; start < kStarts; ++start) {
+        x = start == 0 ? Complex(0.0) : std::polar(radius, 0.7 + 2.1 * start);
+        if (laguerre_from(a, m, x, work)) {
+            return true;
+        }
     }
     return false;
 }

@@ -1,15 +1,18 @@
-// Sturm sequence isolation of the first root of F on [lo, hi], then Illinois refinement.
+// Sturm sequence isolation of the first root of F on [lo, hi], then regula falsi refinement.
 //
 // F is first mapped to G(s) = F(lo + (hi − lo)·s) on s ∈ [0, 1] (detail/univariate.h). The
 // sequence p₀ = G, p₁ = G', p_{i+1} = −rem(p_{i−1}, p_i) is built in doubles with every member
 // normalised to max |coefficient| = 1; a remainder whose coefficients are all below
 // kRemainderZero of the division's scale counts as zero and ends the sequence. Ending at a
-// near-common factor of G and G' is deliberate: the number of sign changes V(a) − V(b) then counts
-// the *distinct* roots of G in (a, b] (the generalised Sturm theorem, e.g. Basu, Pollack & Roy,
-// "Algorithms in Real Algebraic Geometry", Thm 2.50), so a double root — a tangent ray — is one
-// root and is reported as a hit, and a pair of roots closer than about √kRemainderZero merges
-// into one such root. Bisection on counts isolates the first root; a bracket with a sign change
-// is refined by Illinois, one without (even multiplicity) by further bisection on counts.
+// near-common factor of G and G' is deliberate: the number of sign changes V(a) − V(b) then
+// counts the *distinct* roots of G in (a, b] (the generalised Sturm theorem, e.g. Basu, Pollack
+// & Roy, "Algorithms in Real Algebraic Geometry", 2nd ed., Thm 2.50), so a double root — a
+// tangent ray — is one root, and a pair of roots closer than about √kRemainderZero merges into
+// one such root. Bisection on counts isolates the first root; a bracket with a sign change is
+// refined by regula falsi (detail::regula_falsi), one without by even_root, which confirms a
+// tangent by value (G' = 0 where G touches zero within rounding) or finds the sign change the
+// counts hid, and otherwise goes on after the bracket. Double roots whose remainder noise
+// exceeds kRemainderZero are caught through kRemainderSuspect.
 // Reference for the method in ray tracing: Hook & McAree, "Using Sturm sequences to bracket real
 // roots of polynomial equations", Graphics Gems I (1990) 416–422.
 #include <algorithm>
@@ -25,11 +28,13 @@ namespace {
 using detail::Coefficients;
 
 // A remainder whose coefficients are all below kRemainderZero times the scale of its division
-// (the largest quotient coefficient, members being normalised) is zero. This separates roots
-// ≳ 1e-5 apart (a close pair r ± δ leaves a remainder of relative size ~δ²) and catches the
-// double roots whose remainder noise stays small; the Euclidean steps can amplify rounding to
-// far more (1e-10 to 1e-7 at degree 7 was observed), which kRemainderSuspect handles.
-constexpr double kRemainderZero = 1e-11;
+// (the largest quotient coefficient, members being normalised) is zero: a few hundred ε, so
+// that only a genuine near-common factor of G and G' ends the chain (a larger threshold, 1e-11
+// was tried, also cut chains where a member with a tiny leading coefficient makes the next two
+// nearly proportional, and the counts went wrong). It separates close roots down to ~1e-7 (a
+// pair r ± δ leaves a remainder of relative size ~δ²). Most double roots leave more rounding
+// than that in their remainder, and are found through kRemainderSuspect instead.
+constexpr double kRemainderZero = 1e-13;
 
 // A remainder below this relative size marks its divisor as a suspected near-common factor: a
 // double root that rounding turned into a complex pair r ± iδ has no sign change and the counts
@@ -40,6 +45,10 @@ constexpr double kRemainderSuspect = 1e-5;
 // Effort allowed per ray (bisections on counts and refinement steps) before the method gives
 // up with RootStatus::unknown; one isolation exhausts the unit interval in doubles in ~50.
 constexpr int kMaxWork = 200;
+
+// |G| at the critical point next to a claimed near-common factor (G has max |g_k| = 1) up to
+// which the claim is plausible.
+constexpr double kFactorSmallValue = 1e-6;
 
 // Tries of the root of G' as the tangent point of an even-multiplicity root, and how far (in s)
 // the last try may move from the bracket found by counts.
@@ -206,14 +215,19 @@ double even_root(const SturmSequence& seq, const detail::UnitRestriction& u, dou
         if (attempts < kMaxTangentAttempts && da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)) {
             ++attempts;
             const double t = detail::refine_root(u, true, a, b, da, db, work);
-            const double c = std::clamp((t - u.lo) / u.w, a, b);
-            const double ga = detail::horner(g.data(), n, a);
-            const double gc = detail::horner(g.data(), n, c);
-            if (ga != 0.0 && gc != 0.0 && (ga < 0.0) != (gc < 0.0)) {
-                return detail::refine_root(u, false, a, c, ga, gc, work);
-            }
-            if (detail::touches_zero(u, t)) {
-                return t;
+            if (!std::isnan(t)) {
+                const double c = std::clamp((t - u.lo) / u.w, a, b);
+                const double ga = detail::horner(g.data(), n, a);
+                const double gc = detail::horner(g.data(), n, c);
+                if (ga != 0.0 && gc != 0.0 && (ga < 0.0) != (gc < 0.0)) {
+                    const double root = detail::refine_root(u, false, a, c, ga, gc, work);
+                    if (!std::isnan(root)) {
+                        return root;
+                    }
+                }
+                if (detail::touches_zero(u, t)) {
+                    return t;
+                }
             }
         }
         const double m = 0.5 * (a + b);
@@ -229,19 +243,67 @@ double even_root(const SturmSequence& seq, const detail::UnitRestriction& u, dou
     // Counts near a tangent are noise-limited; the critical point next to the bracket is not.
     const double m = 0.5 * (a + b);
     const double t = detail::critical_point_near(u, m, work);
-    return std::abs(t - detail::from_unit(m, u.lo, u.hi)) <= kTangentReach * u.w &&
-                   t >= u.lo && t <= u.hi && detail::touches_zero(u, t)
+    return std::abs(t - detail::from_unit(m, u.lo, u.hi)) <= kTangentReach * u.w && t >= u.lo &&
+                   t <= u.hi && detail::touches_zero(u, t)
                ? t
                : NAN;
 }
 
-// The first root of G in (0, 1] by Sturm counts, as t, or NaN when the counts find none.
-// Sets `limit_reached` when kMaxWork runs out.
-double first_counted_root(const SturmSequence& seq, const detail::UnitRestriction& u, int& work,
-                          bool& limit_reached) {
+// A chain that ends early claims a near-common factor of G and G', so each real root of that
+// last member in [0, 1] must lie next to a critical point of G where |G| is small (a tangent,
+// or the close complex pair of a near miss, which even_root tells apart). A small remainder
+// can have other causes (a member with a tiny leading coefficient makes the next two nearly
+// proportional), and then the counts are wrong: the method answers RootStatus::unknown rather
+// than trust them. Factors of degree ≥ 3 are not checked.
+bool common_factor_is_plausible(const SturmSequence& seq, const detail::UnitRestriction& u,
+                                int& work) {
+    const int last = seq.size - 1;
+    const double* p = seq.member(last);
+    std::array<double, 2> roots;
+    int count = 0;
+    if (seq.degree[last] == 1) {
+        roots[count++] = -p[0] / p[1];
+    } else if (seq.degree[last] == 2) {
+        const double discriminant = p[1] * p[1] - 4.0 * p[2] * p[0];
+        if (discriminant >= 0.0) {
+            const double q = -0.5 * (p[1] + std::copysign(std::sqrt(discriminant), p[1]));
+            roots[count++] = q / p[2];
+            if (q != 0.0) {
+                roots[count++] = p[0] / q;
+            }
+        }
+    }
+    for (int i = 0; i < count; ++i) {
+        if (roots[i] < 0.0 || roots[i] > 1.0) {
+            continue;  // does not affect the counts on [0, 1]
+        }
+        const double t = detail::critical_point_near(u, roots[i], work);
+        if (!(std::abs(t - detail::from_unit(roots[i], u.lo, u.hi)) <= kTangentReach * u.w)) {
+            return false;
+        }
+        const double c = std::clamp((t - u.lo) / u.w, 0.0, 1.0);
+        if (!(std::abs(detail::horner(u.g.data(), u.degree, c)) <= kFactorSmallValue)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// What the counts say about the first root of G in (0, 1].
+struct CountedRoot {
+    double t = NAN;                 // the root, or NaN when the counts find none
+    const char* failure = nullptr;  // set when the method must answer RootStatus::unknown
+};
+
+// The first root of G in (0, 1] by Sturm counts.
+CountedRoot first_counted_root(const SturmSequence& seq, const detail::UnitRestriction& u,
+                               int& work) {
     const Coefficients& g = u.g;
     const int n = u.degree;
     const double tol = detail::unit_tolerance(u.w);
+    if (!common_factor_is_plausible(seq, u, work)) {
+        return CountedRoot{NAN, "sturm sequence inconsistent (rounding)"};
+    }
     double a = 0.0;
     int va = sign_changes_at_zero(seq);
     const int v_end = sign_changes_at_one(seq);
@@ -251,11 +313,10 @@ double first_counted_root(const SturmSequence& seq, const detail::UnitRestrictio
         int vb = v_end;
         while (va - vb > 1) {
             if (work >= kMaxWork) {
-                limit_reached = true;
-                return NAN;
+                return CountedRoot{NAN, "sturm bisection limit reached"};
             }
             if (b - a <= tol) {
-                return detail::from_unit(0.5 * (a + b), u.lo, u.hi);  // a cluster
+                return CountedRoot{detail::from_unit(0.5 * (a + b), u.lo, u.hi)};  // a cluster
             }
             const double m = 0.5 * (a + b);
             const int vm = sign_changes(seq, m);
@@ -271,20 +332,23 @@ double first_counted_root(const SturmSequence& seq, const detail::UnitRestrictio
         const double ga = detail::horner(g.data(), n, a);
         const double gb = detail::horner(g.data(), n, b);
         if (gb == 0.0) {
-            return detail::from_unit(b, u.lo, u.hi);
+            return CountedRoot{detail::from_unit(b, u.lo, u.hi)};
         }
         if ((ga < 0.0) != (gb < 0.0) && ga != 0.0) {
-            return detail::refine_root(u, false, a, b, ga, gb, work);
+            const double t = detail::refine_root(u, false, a, b, ga, gb, work);
+            if (!std::isnan(t)) {
+                return CountedRoot{t};
+            }
         }
         const double t = even_root(seq, u, a, b, va, work);
         if (!std::isnan(t)) {
-            return t;
+            return CountedRoot{t};
         }
         // Nothing real on [a, b] after all: look beyond it.
         a = b;
         va = vb;
     }
-    return NAN;
+    return CountedRoot{};
 }
 
 // The first tangent point t ≤ limit among the real roots of the suspected near-common factor
@@ -335,11 +399,11 @@ RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double
     if (u.degree > 0) {
         SturmSequence seq;
         build_sequence(u.g, u.degree, seq);
-        bool limit_reached = false;
-        t = first_counted_root(seq, u, work, limit_reached);
-        if (limit_reached) {
-            return detail::unknown("sturm bisection limit reached", work);
+        const CountedRoot counted = first_counted_root(seq, u, work);
+        if (counted.failure != nullptr) {
+            return detail::unknown(counted.failure, work);
         }
+        t = counted.t;
         if (seq.suspect >= 0) {
             // A tangent before the counted root wins; so does one just after it when the
             // counted root is not a root in the better basis (rounding noise of G around the
@@ -355,9 +419,8 @@ RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double
     if (!std::isnan(t)) {
         return detail::hit(t, work);
     }
-    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi)
-               ? detail::hit(hi, work)
-               : detail::miss(work);
+    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi) ? detail::hit(hi, work)
+                                                                             : detail::miss(work);
 }
 
 }  // namespace locus::render

@@ -1,12 +1,15 @@
 // Every root finder of render/root_finder.h on the same cases, built from known roots: simple,
-// first among several, clustered, double (a tangent ray must be a hit), at either end,
-// Wilkinson-like, tiny and huge coefficients, degree 12, seeded random products compared to
-// their known first root, and degenerate restrictions (zero, leading zeros, non-finite).
+// first among several, clustered, double (a tangent ray must be a hit, a near miss must not),
+// at either end, Wilkinson-like, tiny and huge coefficients, degree 12, seeded random products
+// compared to their known first root (within the conditioning of the rounded coefficients),
+// and degenerate input (zero, leading zeros, non-finite, invalid interval). Methods and their
+// tolerances: render/root_finders/.
 #include "render/root_finder.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
@@ -27,8 +30,7 @@ int seed_count(int base) {
 
 // scale · Π (t − r) · Π (t² − 2·Re z·t + |z|²) over the real roots and the complex pairs.
 RayPolynomial from_roots(const std::vector<double>& roots,
-                         const std::vector<std::complex<double>>& pairs = {},
-                         double scale = 1.0) {
+                         const std::vector<std::complex<double>>& pairs = {}, double scale = 1.0) {
     RayPolynomial f;
     f.degree = 0;
     f.c[0] = scale;
@@ -55,7 +57,7 @@ RayPolynomial from_roots(const std::vector<double>& roots,
 
 template <class Finder>
 class RootFinderTest : public ::testing::Test {
-protected:
+  protected:
     RootResult solve(const RayPolynomial& f, double lo, double hi) const {
         const RootResult result = Finder{}.first_root(f, lo, hi);
         EXPECT_TRUE(std::isfinite(result.t)) << "t = " << result.t;
@@ -97,8 +99,8 @@ struct FinderName {
     }
 };
 
-using Finders = ::testing::Types<SturmRootFinder, BernsteinRootFinder, LaguerreRootFinder,
-                                 CompanionRootFinder>;
+using Finders =
+    ::testing::Types<SturmRootFinder, BernsteinRootFinder, LaguerreRootFinder, CompanionRootFinder>;
 TYPED_TEST_SUITE(RootFinderTest, Finders, FinderName);
 
 TYPED_TEST(RootFinderTest, SimpleRoots) {
@@ -137,6 +139,20 @@ TYPED_TEST(RootFinderTest, DoubleRootIsAHit) {
     this->expect_hit(from_roots({0.6, 0.6, 0.2}), 0.0, 1.0, 0.2);
     // A double root with no sign change before a simple root.
     this->expect_hit(from_roots({0.2, 0.2, 0.6}), 0.0, 1.0, 0.2, 1e-6);
+}
+
+TYPED_TEST(RootFinderTest, NearTangentMissIsAMiss) {
+    // A complex pair 1e-3 or 1e-5 off the axis: F stays far above its rounding, so no tangent.
+    this->expect_miss(from_roots({-2.0}, {{0.5, 1e-3}}), 0.0, 1.0);
+    this->expect_miss(from_roots({-2.0}, {{0.5, 1e-5}}), 0.0, 1.0);
+    // ... and the real root after it is still found.
+    this->expect_hit(from_roots({-2.0, 0.8}, {{0.5, 1e-5}}), 0.0, 1.0, 0.8);
+    this->expect_hit(from_roots({-2.0, 0.8, 1.3, -0.7}, {{0.5, 1e-4}, {0.1, 0.3}}), 0.0, 1.0, 0.8);
+}
+
+TYPED_TEST(RootFinderTest, TangentAtZeroInsideTheInterval) {
+    // F = t²·(t − 0.5)·(t + 3): the double root at exactly 0 comes first.
+    this->expect_hit(from_roots({0.0, 0.0, 0.5, -3.0}), -0.25, 1.0, 0.0, 1e-6);
 }
 
 TYPED_TEST(RootFinderTest, RootAtEitherEnd) {
@@ -189,7 +205,7 @@ TYPED_TEST(RootFinderTest, DegreeTwelveProduct) {
 }
 
 TYPED_TEST(RootFinderTest, RandomProductsAgainstKnownFirstRoot) {
-    for (int seed = 0; seed < seed_count(200); ++seed) {
+    for (int seed = 0; seed < seed_count(2000); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> position(-3.0, 3.0);
@@ -246,7 +262,7 @@ TYPED_TEST(RootFinderTest, RandomProductsAgainstKnownFirstRoot) {
 }
 
 TYPED_TEST(RootFinderTest, RandomDoubleRootsAreHits) {
-    for (int seed = 0; seed < seed_count(100); ++seed) {
+    for (int seed = 0; seed < seed_count(1000); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> position(-3.0, 3.0);
@@ -298,12 +314,15 @@ TYPED_TEST(RootFinderTest, LeadingZeroCoefficientsReduceTheDegree) {
     this->expect_miss(constant, 0.0, 1.0);
 }
 
-TYPED_TEST(RootFinderTest, NonFiniteInputIsUnknown) {
+TYPED_TEST(RootFinderTest, NonFiniteOrInvalidInputIsUnknown) {
     RayPolynomial f = from_roots({0.5, -1.0});
     f.c[1] = std::numeric_limits<double>::quiet_NaN();
     this->expect_unknown(f, 0.0, 1.0, "non-finite coefficient");
     f.c[1] = HUGE_VAL;
     this->expect_unknown(f, 0.0, 1.0, "non-finite coefficient");
+    const RayPolynomial g = from_roots({0.5, -1.0});
+    this->expect_unknown(g, 1.0, 0.0, "invalid interval");
+    this->expect_unknown(g, 0.0, std::numeric_limits<double>::quiet_NaN(), "invalid interval");
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
 // Steps shared by the univariate root finders of render/root_finder.h: screening of degenerate
-// restrictions, the map of [lo, hi] onto [0, 1], end-point tests, the safeguarded Illinois
-// refinement and Newton polishing. Internal to render/root_finders; this is per-ray code, so
-// everything is inline and works on stack arrays only.
+// restrictions, the map of [lo, hi] onto [0, 1] (with the choice, point by point, between that
+// basis and the original one), bracketed regula falsi refinement, Newton polishing, and the
+// tests for "a root within rounding" and "a tangent". Internal to render/root_finders; this is
+// per-ray code, so everything is inline and works on stack arrays only.
 //
-// Tolerances are relative and stated once here so that every method agrees on what "a root at
-// lo", "a negligible leading coefficient" and "accurate enough" mean.
+// Tolerances are stated once here so that every method agrees on what "a root at lo", "a
+// negligible leading coefficient", "touches zero" and "accurate enough" mean.
 #pragma once
 
 #include <algorithm>
@@ -328,11 +329,14 @@ inline bool original_rounds_less(const BothBases& b, const UnitRestriction& u, d
 }
 
 // The root, as t, of G (or of G' when `of_derivative`) bracketed by [a, b] ⊂ [0, 1] with
-// values ga, gb of opposite signs, refined by regula falsi in the basis that rounds less.
+// values ga, gb of opposite signs, refined by regula falsi in the basis that rounds less, to
+// the root tolerance or, when `coarse_s` > 0, only to a bracket of that width in s. NaN when
+// that basis sees no sign change at the ends: the one in G was rounding noise.
 inline double refine_root(const UnitRestriction& u, bool of_derivative, double a, double b,
-                          double ga, double gb, int& work) {
+                          double ga, double gb, int& work, double coarse_s = 0.0) {
     BothBases bases;
     make_bases(u, of_derivative, bases);
+    const double tol_s = std::max(unit_tolerance(u.w), coarse_s);
     // With lo = 0 the two bases differ only by the scaling of the coefficients.
     if (u.lo != 0.0 && original_rounds_less(bases, u, 0.5 * (a + b))) {
         const double ta = from_unit(a, u.lo, u.hi);
@@ -340,29 +344,52 @@ inline double refine_root(const UnitRestriction& u, bool of_derivative, double a
         const double fa = horner(bases.f, bases.f_degree, ta);
         const double fb = horner(bases.f, bases.f_degree, tb);
         if (fa != 0.0 && fb != 0.0 && (fa < 0.0) != (fb < 0.0)) {
-            const double tol = std::max(kRootTolerance * std::max(1.0, u.w),
-                                        8.0 * kEpsilon * std::max(std::abs(ta), std::abs(tb)));
+            const double tol =
+                std::max(tol_s * u.w, 8.0 * kEpsilon * std::max(std::abs(ta), std::abs(tb)));
             return regula_falsi(bases.f, bases.f_degree, ta, tb, fa, fb, tol, work);
         }
+        return std::numeric_limits<double>::quiet_NaN();
     }
-    const double s =
-        regula_falsi(bases.g, bases.g_degree, a, b, ga, gb, unit_tolerance(u.w), work);
+    const double s = regula_falsi(bases.g, bases.g_degree, a, b, ga, gb, tol_s, work);
     return from_unit(s, u.lo, u.hi);
 }
 
-// F vanishes at t ∈ [lo, hi] within the rounding of the basis that rounds less there.
-inline bool is_root_within_rounding(const UnitRestriction& u, double t) {
-    BothBases bases;
-    make_bases(u, false, bases);
+// F(t) for t ∈ [lo, hi], evaluated in the basis that rounds less there, and the uncertainty of
+// F(t) that comes with the data: the coefficients of F are doubles, so F(t) is only known to
+// about ε·Σ|c_k||t|^k whichever basis evaluates it.
+inline double value_with_uncertainty(const UnitRestriction& u, double t, double& uncertainty) {
+    double f_scale;
+    const double f_value = horner_with_magnitude(u.f, u.f_degree, t, f_scale);
+    uncertainty = (u.f_degree + 1) * kEpsilon * f_scale;
     const double s = std::clamp((t - u.lo) / u.w, 0.0, 1.0);
-    return original_rounds_less(bases, u, s) ? is_zero_within_rounding(u.f, u.f_degree, t)
-                                             : is_zero_within_rounding(u.g.data(), u.degree, s);
+    double g_scale;
+    const double g_value = horner_with_magnitude(u.g.data(), u.degree, s, g_scale);
+    return f_scale * u.kappa <= g_scale ? f_value : g_value / u.kappa;
 }
 
-// F touches zero at t ∈ [lo, hi] within the rounding of either basis.
-inline bool touches_zero(const UnitRestriction& u, double t) {
-    return touches_zero(u.f, u.f_degree, t) ||
-           touches_zero(u.g.data(), u.degree, std::clamp((t - u.lo) / u.w, 0.0, 1.0));
+// F vanishes at t within the uncertainty of the data (see value_with_uncertainty).
+inline bool is_root_within_rounding(const UnitRestriction& u, double t) {
+    double uncertainty;
+    const double value = value_with_uncertainty(u, t, uncertainty);
+    return std::abs(value) <= 4.0 * uncertainty;
+}
+
+// F touches zero at the critical point t: within kTouchFactor times the uncertainty of the
+// data (a root of even multiplicity that rounding of the coefficients may have split or lifted
+// off the axis), allowing for t itself being known only to the root tolerance τ, which moves
+// F by up to |F''(t)|·τ²/2 (without it, F = t²·H with a tangent at exactly 0 never touches:
+// F and its rounding scale shrink together).
+// `slack` (in units of F) widens the test for a t known less precisely.
+inline bool touches_zero(const UnitRestriction& u, double t, double slack = 0.0) {
+    double uncertainty;
+    const double value = value_with_uncertainty(u, t, uncertainty);
+    double second = 0.0;
+    for (int k = u.f_degree; k >= 2; --k) {
+        second = second * t + k * (k - 1) * u.f[k];
+    }
+    const double tau = kRootTolerance * std::max(1.0, u.w);
+    return std::abs(value) <=
+           kTouchFactor * uncertainty + 0.5 * std::abs(second) * tau * tau + slack;
 }
 
 // Newton steps used to polish a root or a critical point.
