@@ -53,12 +53,11 @@ RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
         break;
     }
     if (restriction != nullptr) {
-        return polished(ray, interval,
-                        on_restriction(*restriction, restriction_origin, interval, speed));
+        return on_restriction(*restriction, restriction_origin, interval, speed);
     }
     const double middle = 0.5 * (interval.lo + interval.hi);
     const RayPolynomial computed = restrictor_.restrict_to(ray.at(middle), ray.direction);
-    return polished(ray, interval, on_restriction(computed, middle, interval, speed));
+    return on_restriction(computed, middle, interval, speed);
 }
 
 RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, double origin,
@@ -78,25 +77,6 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
         }
     }
     found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
-    return found;
-}
-
-RootResult SurfaceTracer::polished(const Ray& ray, Interval interval, RootResult found) const {
-    if (found.status != RootStatus::hit) {
-        return found;
-    }
-    const algebra::ValueGradient vg = f_->value_gradient(to_point(ray.at(found.t)));
-    const double slope = vg.gradient[0] * ray.direction.x + vg.gradient[1] * ray.direction.y +
-                         vg.gradient[2] * ray.direction.z;
-    if (slope == 0.0 || !std::isfinite(slope) || !std::isfinite(vg.value)) {
-        return found;
-    }
-    const double step = -vg.value / slope;
-    const double t = found.t + step;
-    if (std::abs(step) <= 1e-6 * (interval.hi - interval.lo) && t >= interval.lo &&
-        t <= interval.hi) {
-        found.t = t;
-    }
     return found;
 }
 
