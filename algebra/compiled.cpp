@@ -2,7 +2,9 @@
 
 #include <flint/fmpq_poly.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
@@ -46,45 +48,69 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
         terms_.push_back({fmpq_get_d(f.coefficient(i).get()), static_cast<int>(e[0]),
                           static_cast<int>(e[1]), static_cast<int>(e[2])});
     }
+    std::sort(terms_.begin(), terms_.end(), [](const CompiledTerm& p, const CompiledTerm& q) {
+        return std::tie(p.ex, p.ey, p.ez) < std::tie(q.ex, q.ey, q.ez);
+    });
+    for (std::size_t i = 0; i < terms_.size(); ++i) {
+        if (groups_.empty() || groups_.back().ex != terms_[i].ex ||
+            groups_.back().ey != terms_[i].ey) {
+            groups_.push_back({terms_[i].ex, terms_[i].ey, i, i});
+        }
+        groups_.back().end = i + 1;
+    }
 }
 
 const std::string& CompiledPolynomial::equation() const {
     return exact_->equation;
 }
 
-double CompiledPolynomial::value(const Point3& p) const {
-    std::array<std::array<double, kMaxCompiledDegree + 1>, 3> powers;
-    for (int axis = 0; axis < 3; ++axis) {
-        powers[axis][0] = 1.0;
-        for (int k = 1; k <= degree_; ++k) {
-            powers[axis][k] = powers[axis][k - 1] * p[axis];
-        }
+namespace {
+// powers[k + 1] = v^k for k ≤ degree, powers[0] = 0 (so that k·v^(k−1) reads powers[k] = 0·…
+// safely for k = 0).
+using PowerRow = std::array<double, kMaxCompiledDegree + 2>;
+void fill_powers(PowerRow& powers, double v, int degree) {
+    powers[0] = 0.0;
+    powers[1] = 1.0;
+    for (int k = 1; k <= degree; ++k) {
+        powers[k + 1] = powers[k] * v;
     }
+}
+}  // namespace
+
+double CompiledPolynomial::value(const Point3& p) const {
+    PowerRow xs, ys, zs;
+    fill_powers(xs, p[0], degree_);
+    fill_powers(ys, p[1], degree_);
+    fill_powers(zs, p[2], degree_);
     double sum = 0.0;
-    for (const CompiledTerm& term : terms_) {
-        sum += term.coefficient * powers[0][term.ex] * powers[1][term.ey] * powers[2][term.ez];
+    for (const Group& g : groups_) {
+        double in_z = 0.0;
+        for (std::size_t i = g.begin; i < g.end; ++i) {
+            in_z += terms_[i].coefficient * zs[terms_[i].ez + 1];
+        }
+        sum += xs[g.ex + 1] * ys[g.ey + 1] * in_z;
     }
     return sum;
 }
 
 ValueGradient CompiledPolynomial::value_gradient(const Point3& p) const {
-    // powers[axis][k + 1] = p^k, powers[axis][0] = 0 stands for p^(−1)·0 in the derivative.
-    std::array<std::array<double, kMaxCompiledDegree + 2>, 3> powers;
-    for (int axis = 0; axis < 3; ++axis) {
-        powers[axis][0] = 0.0;
-        powers[axis][1] = 1.0;
-        for (int k = 1; k <= degree_; ++k) {
-            powers[axis][k + 1] = powers[axis][k] * p[axis];
-        }
-    }
+    PowerRow xs, ys, zs;
+    fill_powers(xs, p[0], degree_);
+    fill_powers(ys, p[1], degree_);
+    fill_powers(zs, p[2], degree_);
     ValueGradient result{0.0, {0.0, 0.0, 0.0}};
-    for (const CompiledTerm& t : terms_) {
-        const double px = powers[0][t.ex + 1], py = powers[1][t.ey + 1], pz = powers[2][t.ez + 1];
-        const double c = t.coefficient;
-        result.value += c * px * py * pz;
-        result.gradient[0] += c * t.ex * powers[0][t.ex] * py * pz;
-        result.gradient[1] += c * t.ey * px * powers[1][t.ey] * pz;
-        result.gradient[2] += c * t.ez * px * py * powers[2][t.ez];
+    for (const Group& g : groups_) {
+        double in_z = 0.0, in_z_derivative = 0.0;
+        for (std::size_t i = g.begin; i < g.end; ++i) {
+            const CompiledTerm& t = terms_[i];
+            in_z += t.coefficient * zs[t.ez + 1];
+            in_z_derivative += t.coefficient * t.ez * zs[t.ez];
+        }
+        const double x = xs[g.ex + 1], y = ys[g.ey + 1];
+        result.value += x * y * in_z;
+        result.gradient[0] += g.ex * xs[g.ex] * y * in_z;
+        result.gradient[1] += g.ey * x * ys[g.ey] * in_z;
+        result.gradient[2] += x * y * in_z_derivative;
     }
     return result;
 }

@@ -62,7 +62,14 @@ class CompiledPolynomial {
     CompiledPolynomial(std::shared_ptr<const Exact> exact, bool made_square_free);
 
     std::shared_ptr<const Exact> exact_;
+    // Terms sorted by (ex, ey, ez); a group is a run with equal (ex, ey), evaluated as
+    // x^ex·y^ey·Σ c·z^ez so that value and gradient cost two multiply-adds per term.
+    struct Group {
+        int ex, ey;
+        std::size_t begin, end;
+    };
     std::vector<CompiledTerm> terms_;
+    std::vector<Group> groups_;
     int degree_ = 0;
     bool made_square_free_ = false;
 };
