@@ -181,66 +181,61 @@ int run_implicit_bench(const BenchArgs& args) {
     const std::vector<std::string> cases = suite_cases(args, dir);
     const bool with_singular = args.singular != "off" && on_path(args.singular);
     if (args.csv) {
-        std::cout << "case,degree,terms,auto_method,auto_seconds,groebner_seconds,"
-                     "resultant_seconds,singular_eliminate_seconds\n";
+        std::cout << "case,degree,terms,auto_method,auto_seconds,interpolate_seconds,"
+                     "groebner_seconds,resultant_seconds,singular_eliminate_seconds\n";
     } else {
-        std::printf("%-18s %6s %6s %-10s %10s %10s %10s %10s\n", "case", "degree", "terms", "auto",
-                    "auto s", "groebner s", "result. s", "Singular s");
+        std::printf("%-18s %6s %6s %-12s %10s %10s %10s %10s %10s\n", "case", "degree", "terms",
+                    "auto", "auto s", "interp. s", "groebner s", "result. s", "Singular s");
     }
     auto seconds_since = [](std::chrono::steady_clock::time_point t) {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     };
+    // Each route is timed on its own; `auto` is timed as `locus implicitize` runs it
+    // (implicit::implicitize_auto, under the same --limit).
+    auto timed = [&](auto&& route) {
+        try {
+            const auto t = std::chrono::steady_clock::now();
+            route();
+            return seconds_since(t);
+        } catch (const Error&) {
+            return -1.0;  // not applicable, gave up, or ran out of time
+        }
+    };
     for (const auto& name : cases) {
         const implicit::Parametrization map =
             implicit::parse_parametrization(read_input(dir + "/" + name + ".param"));
-        double resultant_seconds = -1;
+        algebra::GroebnerOptions options;
         std::optional<implicit::ImplicitResult> result;
-        try {
-            const auto t = std::chrono::steady_clock::now();
-            result = implicit::implicitize_by_resultant(map);
-            resultant_seconds = seconds_since(t);
-        } catch (const Error&) {
-            // not applicable or gave up: auto falls back to Gröbner
-        }
-        double groebner_seconds = -1;
-        try {
-            algebra::GroebnerOptions options;
-            options.deadline = deadline_after(args.limit_seconds);
-            const auto t = std::chrono::steady_clock::now();
-            implicit::ImplicitResult by_groebner = implicit::implicitize(map, options);
-            groebner_seconds = seconds_since(t);
-            if (!result) {
-                result = std::move(by_groebner);
-            }
-        } catch (const Timeout&) {
-            // reported as ">limit"
-        }
-        // As in `locus implicitize`: Gröbner when it finishes within 0.2 s, else resultants
-        // (0.2 s wasted on the way), else Gröbner.
-        const bool groebner_quick = groebner_seconds >= 0 && groebner_seconds <= 0.2;
-        const bool auto_is_resultant = !groebner_quick && resultant_seconds >= 0;
-        const double auto_seconds = groebner_quick      ? groebner_seconds
-                                    : auto_is_resultant ? 0.2 + resultant_seconds
-                                                        : groebner_seconds;
+        options.deadline = deadline_after(args.limit_seconds);
+        const double auto_seconds =
+            timed([&] { result = implicit::implicitize_auto(map, options); });
+        const double interpolate_seconds =
+            timed([&] { implicit::implicitize_by_interpolation(map); });
+        const double resultant_seconds = timed([&] { implicit::implicitize_by_resultant(map); });
+        options.deadline = deadline_after(args.limit_seconds);
+        const double groebner_seconds = timed([&] { implicit::implicitize(map, options); });
         const double singular_seconds =
             with_singular ? time_singular_eliminate(args.singular, map, args.limit_seconds) : -2;
         const long degree = result && result->equation ? result->equation->total_degree() : -1;
         const std::size_t terms = result && result->equation ? result->equation->num_terms() : 0;
+        const std::string method = result ? result->method : "-";
         const std::string singular_text =
             singular_seconds == -2 ? "-" : seconds_or_limit(singular_seconds, args.limit_seconds);
+        auto shown = [&](double seconds) {
+            return seconds < 0 ? std::string("-") : seconds_or_limit(seconds, 0);
+        };
         if (args.csv) {
-            std::cout << name << "," << degree << "," << terms << ","
-                      << (auto_is_resultant ? "resultant" : "groebner") << "," << auto_seconds
-                      << "," << groebner_seconds << "," << resultant_seconds << ","
-                      << singular_seconds << "\n";
+            std::cout << name << "," << degree << "," << terms << "," << method << ","
+                      << auto_seconds << "," << interpolate_seconds << "," << groebner_seconds
+                      << "," << resultant_seconds << "," << singular_seconds << "\n";
         } else {
-            std::printf(
-                "%-18s %6ld %6zu %-10s %10s %10s %10s %10s\n", name.c_str(), degree, terms,
-                auto_is_resultant ? "resultant" : "groebner",
-                seconds_or_limit(auto_seconds, args.limit_seconds).c_str(),
-                seconds_or_limit(groebner_seconds, args.limit_seconds).c_str(),
-                resultant_seconds < 0 ? "-" : seconds_or_limit(resultant_seconds, 0).c_str(),
-                singular_text.c_str());
+            std::printf("%-18s %6ld %6zu %-12s %10s %10s %10s %10s %10s\n", name.c_str(), degree,
+                        terms, method.c_str(), shown(auto_seconds).c_str(),
+                        shown(interpolate_seconds).c_str(),
+                        groebner_seconds < 0
+                            ? (">" + std::to_string(std::lround(args.limit_seconds))).c_str()
+                            : shown(groebner_seconds).c_str(),
+                        shown(resultant_seconds).c_str(), singular_text.c_str());
         }
         std::cout.flush();
     }

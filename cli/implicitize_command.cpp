@@ -26,9 +26,10 @@ struct ImplicitizeArgs {
 
 int run_implicitize(const ImplicitizeArgs& args) {
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
-    if (args.method != "auto" && args.method != "groebner" && args.method != "resultant") {
-        throw CommandFailure(exit_input,
-                             "--method " + args.method + ": expected auto, groebner or resultant");
+    if (args.method != "auto" && args.method != "groebner" && args.method != "resultant" &&
+        args.method != "interpolate") {
+        throw CommandFailure(exit_input, "--method " + args.method +
+                                             ": expected auto, groebner, resultant or interpolate");
     }
     std::string text, source;
     if (!args.params.empty()) {
@@ -60,19 +61,22 @@ int run_implicitize(const ImplicitizeArgs& args) {
         std::string fallback_reason;
         found = implicit::implicitize_auto(map, options, &fallback_reason);
         if (!fallback_reason.empty()) {
-            std::fprintf(stderr, "resultant route gave up (%s); back to groebner\n",
-                         fallback_reason.c_str());
+            std::fprintf(stderr, "faster routes gave up (%s)\n", fallback_reason.c_str());
         }
     } else if (args.method == "resultant") {
         found = implicit::implicitize_by_resultant(map);
+    } else if (args.method == "interpolate") {
+        found = implicit::implicitize_by_interpolation(map);
     }
     const implicit::ImplicitResult r =
         found ? std::move(*found) : implicit::implicitize(map, options);
     finish_progress();
     std::fprintf(stderr, "method: %s\n",
-                 r.method == "resultant" ? "resultant (iterated Sylvester, factor kept by "
-                                           "substitution)"
-                                         : "groebner (elimination)");
+                 r.method == "resultant"     ? "resultant (iterated Sylvester, factor kept by "
+                                               "substitution)"
+                 : r.method == "interpolate" ? "interpolate (kernel modulo primes, CRT, rational "
+                                               "reconstruction)"
+                                             : "groebner (elimination)");
     for (const std::size_t v : map.half_angle) {
         const std::string& u = map.parameter_ring->variable_name(v);
         std::fprintf(stderr,
@@ -125,8 +129,8 @@ void add_implicitize_command(CLI::App& app, int& exit_code) {
         ->required();
     cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
     cmd->add_option("--method", args->method,
-                    "auto (groebner for 0.2 s, then resultant for plane curves and surfaces) | "
-                    "groebner | resultant");
+                    "auto (groebner for 0.2 s, then interpolation, then resultant, for plane "
+                    "curves and surfaces) | groebner | resultant | interpolate");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
     cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
     cmd->callback([args, &exit_code] { exit_code = run_implicitize(*args); });

@@ -1,6 +1,7 @@
 // Implicitization of classic parametrizations against their known equations, verified by
 // substitution, plus non-principal images and malformed parametrization files.
 #include "implicit/implicitize.h"
+#include "tests/support/test_data.h"
 
 #include <gtest/gtest.h>
 
@@ -32,6 +33,11 @@ TEST_P(Classic, KnownEquationVerified) {
     const ImplicitResult by_resultant = implicitize_by_resultant(map);
     ASSERT_TRUE(by_resultant.equation.has_value());
     EXPECT_EQ(*by_resultant.equation, *r.equation);
+    // So must interpolation modulo primes.
+    const ImplicitResult by_interpolation = implicitize_by_interpolation(map);
+    ASSERT_TRUE(by_interpolation.equation.has_value());
+    EXPECT_EQ(*by_interpolation.equation, *r.equation);
+    EXPECT_EQ(by_interpolation.method, "interpolate");
     // A deliberately wrong equation must fail the check.
     EXPECT_FALSE(vanishes_on(*r.equation + algebra::Polynomial::variable(r.ring, 0), map));
 }
@@ -95,6 +101,38 @@ TEST(Implicitize, ResultantAgreesOnEnneperAndTorusAndRefusesSpaceCurves) {
     }
     EXPECT_THROW(implicitize_by_resultant(parse_parametrization("params: t\nx=t\ny=t^2\nz=t^3\n")),
                  InputError);
+}
+
+TEST(Implicitize, InterpolationAgreesOnEnneperAndTorusAndGivesUpOnDegenerateMaps) {
+    const char* files[] = {
+        "params: u,v\nx = u - u^3/3 + u*v^2\ny = v - v^3/3 + v*u^2\nz = u^2 - v^2\n",
+        "params: u,v\nx = (2+cos(v))*cos(u)\ny = (2+cos(v))*sin(u)\nz = sin(v)\n"};
+    for (const char* f : files) {
+        SCOPED_TRACE(f);
+        const Parametrization map = parse_parametrization(f);
+        EXPECT_EQ(implicitize_by_interpolation(map).equation, implicitize(map).equation);
+    }
+    // A surface map whose image is a line: the kernel is not one-dimensional.
+    EXPECT_THROW(implicitize_by_interpolation(
+                     parse_parametrization("params: s,t\nx = s+t\ny = 2*s+2*t\nz = s+t+1\n")),
+                 Error);
+    EXPECT_THROW(
+        implicitize_by_interpolation(parse_parametrization("params: t\nx=t\ny=t^2\nz=t^3\n")),
+        InputError);
+    // auto falls back to elimination there and still classifies the image.
+    const ImplicitResult line =
+        implicitize_auto(parse_parametrization("params: s,t\nx = s+t\ny = 2*s+2*t\nz = s+t+1\n"));
+    EXPECT_EQ(line.image, ImageKind::lower_dimensional);
+}
+
+TEST(Implicitize, InterpolationReachesTheCubicBezierTriangle) {
+    const Parametrization map = parse_parametrization(
+        test::read_text(test::source_dir() + "/bench/data/implicit/bezier_triangle3.param"));
+    const ImplicitResult r = implicitize_by_interpolation(map);
+    ASSERT_TRUE(r.equation.has_value());
+    EXPECT_EQ(r.equation->total_degree(), 9);
+    EXPECT_EQ(r.equation->num_terms(), 220u);
+    EXPECT_TRUE(vanishes_on(*r.equation, map));  // proved again, independently of the route
 }
 
 TEST(Implicitize, TwistedCubicIsNotPrincipal) {
