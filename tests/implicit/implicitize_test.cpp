@@ -53,6 +53,18 @@ const ClassicCase classic_cases[] = {
      "x^2+y^2+z^2-1"},
     {"steiner_roman", "params: s,t\nx = s*t\ny = s\nz = t\n", "y*z-x"},
     {"crosscap", "params: s,t\nx = s*t\ny = s\nz = t^2\n", "y^2*z-x^2"},
+    {"lemniscate", "params: t\nx = t*(1+t^2)/(1+t^4)\ny = t*(1-t^2)/(1+t^4)\n",
+     "(x^2+y^2)^2-x^2+y^2"},
+    {"cardioid", "params: t\nx = 2*(1-t^2)/(1+t^2)^2\ny = 4*t/(1+t^2)^2\n",
+     "(x^2+y^2-x)^2-x^2-y^2"},
+    // T₂(T₃) = T₃(T₂) = T₆ with x = T₂(t), y = T₃(t).
+    {"chebyshev_curve", "params: t\nx = 2*t^2-1\ny = 4*t^3-3*t\n", "4*x^3-3*x-2*y^2+1"},
+    {"bilinear_patch", "params: s,t\nx = s\ny = t\nz = (1-s)*(1-t)*0+s*(1-t)*0+(1-s)*t*0+s*t*1\n",
+     "x*y-z"},
+    {"roman_rational",
+     "params: s,t\nx = 2*t*(s^2+t^2-1)/(1+s^2+t^2)^2\ny = 2*s*(s^2+t^2-1)/(1+s^2+t^2)^2\n"
+     "z = 4*s*t/(1+s^2+t^2)^2\n",
+     "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z"},
     // z = sin 2θ with x = s cos θ, y = s sin θ, by the half-angle substitution.
     {"plucker_conoid",
      "params: s,t\nx = s*(1-t^2)/(1+t^2)\ny = 2*s*t/(1+t^2)\nz = 4*t*(1-t^2)/(1+t^2)^2\n",
@@ -123,6 +135,17 @@ TEST(Implicitize, InterpolationAgreesOnEnneperAndTorusAndGivesUpOnDegenerateMaps
     const ImplicitResult line =
         implicitize_auto(parse_parametrization("params: s,t\nx = s+t\ny = 2*s+2*t\nz = s+t+1\n"));
     EXPECT_EQ(line.image, ImageKind::lower_dimensional);
+}
+
+TEST(Implicitize, BiquadraticPatchByInterpolationAndResultantsAgree) {
+    // Gröbner elimination takes over a minute here; the other two routes must agree.
+    const Parametrization map = parse_parametrization(
+        test::read_text(test::source_dir() + "/tests/data/biquadratic_patch.param"));
+    const ImplicitResult by_interpolation = implicitize_by_interpolation(map);
+    ASSERT_TRUE(by_interpolation.equation.has_value());
+    EXPECT_EQ(by_interpolation.equation->total_degree(), 8);
+    EXPECT_EQ(by_interpolation.equation, implicitize_by_resultant(map).equation);
+    EXPECT_TRUE(vanishes_on(*by_interpolation.equation, map));
 }
 
 TEST(Implicitize, InterpolationReachesTheCubicBezierTriangle) {
