@@ -143,6 +143,9 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         }
     }
 
+    // Inputs are reduced without a deadline (the partial basis must keep every generator); the
+    // S-pair reductions below can be interrupted.
+    reducer.set_deadline(options.deadline);
     const ResolvedSelection selection = resolve_selection(options.selection, ring->order());
     std::size_t pairs_done = 0;
     while (!pairs.empty() && !unit) {
@@ -165,7 +168,14 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
 
         IntegerPolynomial s = reducer.s_polynomial(basis[pair.first].poly, basis[pair.second].poly,
                                                    pair.lcm.data(), pair.sugar);
-        IntegerPolynomial h = reducer.reduce(std::move(s), basis, reduction);
+        IntegerPolynomial h;
+        try {
+            h = reducer.reduce(std::move(s), basis, reduction);
+        } catch (const detail::ReductionInterrupted&) {
+            // The pair is dropped unprocessed: the basis still generates the ideal.
+            result.outcome = GroebnerOutcome::stopped_timeout;
+            break;
+        }
         ++result.stats.reductions;
         if (h.empty()) {
             ++result.stats.zero_reductions;

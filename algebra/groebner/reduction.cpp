@@ -157,6 +157,9 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
         combine(p, head + 1, a, b, m.data(), r);
         head = 0;
         ++counts.steps;
+        if (deadline_ && std::chrono::steady_clock::now() > *deadline_) {
+            throw ReductionInterrupted{};
+        }
         // Fraction-free steps multiply everything by a each time, but much of that growth is a
         // common factor: divide it out whenever the coefficients have doubled in size since
         // the last time (Singular does the same with p_Content during long reductions).

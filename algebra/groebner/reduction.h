@@ -9,6 +9,8 @@
 // bits after 140 pairs, a minute of work); smallest-lc or oldest finish it in about 2 s.
 #pragma once
 
+#include <chrono>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -20,9 +22,18 @@ struct ReductionCounts {
     std::size_t steps = 0;  // a·p − b·m·g operations
 };
 
+// Thrown by Reducer::reduce when its deadline has passed (checked every step: a clock read is
+// nothing next to a step on large coefficients): a single
+// reduction can run for minutes on large inputs (a bicubic patch's elimination), far past a
+// deadline that is otherwise polled once per S-pair.
+struct ReductionInterrupted {};
+
 class Reducer {
   public:
     explicit Reducer(const MonomialLayout& layout) : layout_(layout) {}
+    void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
+        deadline_ = deadline;
+    }
 
     // Fully reduces p (leading and tail terms) by the non-redundant elements of `basis`; the
     // result is primitive with positive leading coefficient, sugar updated, or empty.
@@ -41,6 +52,7 @@ class Reducer {
                  const std::uint64_t* m, const IntegerPolynomial& g);
 
     const MonomialLayout& layout_;
+    std::optional<std::chrono::steady_clock::time_point> deadline_;
     IntegerPolynomial scratch_;
     std::vector<std::uint64_t> product_;
 };
