@@ -154,14 +154,13 @@ ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
     // The ray's coordinates o_i + t·d_i as exact univariate polynomials.
     std::array<fmpq_poly_t, 3> line;
     std::array<fmpq_poly_struct*, 3> line_pointers;
-    fmpq_t value;
-    fmpq_init(value);
+    Rational value;
     for (int axis = 0; axis < 3; ++axis) {
         fmpq_poly_init(line[axis]);
-        set_exact_double(value, origin[axis]);
-        fmpq_poly_set_coeff_fmpq(line[axis], 0, value);
-        set_exact_double(value, direction[axis]);
-        fmpq_poly_set_coeff_fmpq(line[axis], 1, value);
+        set_exact_double(value.get(), origin[axis]);
+        fmpq_poly_set_coeff_fmpq(line[axis], 0, value.get());
+        set_exact_double(value.get(), direction[axis]);
+        fmpq_poly_set_coeff_fmpq(line[axis], 1, value.get());
         line_pointers[axis] = line[axis];
     }
     fmpq_poly_t restriction, derivative, common;
@@ -182,19 +181,15 @@ ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
         fmpz_poly_t integer_restriction;
         fmpz_poly_init(integer_restriction);
         fmpq_poly_get_numerator(integer_restriction, restriction);
-        fmpq_t lo_exact, hi_exact;
-        fmpq_init(lo_exact);
-        fmpq_init(hi_exact);
-        set_exact_double(lo_exact, lo);
-        set_exact_double(hi_exact, hi);
+        Rational lo_exact, hi_exact;
+        set_exact_double(lo_exact.get(), lo);
+        set_exact_double(hi_exact.get(), hi);
         const std::optional<double> root =
-            first_real_root(integer_restriction, lo_exact, hi_exact, lo_open);
+            first_real_root(integer_restriction, lo_exact.get(), hi_exact.get(), lo_open);
         if (root) {
             result.status = ExactRoot::Status::hit;
             result.t = *root;
         }
-        fmpq_clear(lo_exact);
-        fmpq_clear(hi_exact);
         fmpz_poly_clear(integer_restriction);
     }
     fmpq_poly_clear(restriction);
@@ -203,7 +198,6 @@ ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
     for (auto& l : line) {
         fmpq_poly_clear(l);
     }
-    fmpq_clear(value);
     return result;
 }
 

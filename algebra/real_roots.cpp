@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "algebra/rational.h"
+
 namespace locus::algebra {
 
 void set_exact_double(fmpq_t out, double v) {
@@ -22,7 +24,7 @@ void set_exact_double(fmpq_t out, double v) {
 
 namespace {
 
-// RAII holders for the FLINT values used below.
+// RAII holder for the FLINT polynomials used below (scalars are algebra::Rational).
 struct IntPoly {
     fmpz_poly_t p;
     IntPoly() { fmpz_poly_init(p); }
@@ -32,13 +34,6 @@ struct IntPoly {
     }
     IntPoly& operator=(const IntPoly&) = delete;
     ~IntPoly() { fmpz_poly_clear(p); }
-};
-struct Q {
-    fmpq_t v;
-    Q() { fmpq_init(v); }
-    Q(const Q&) = delete;
-    Q& operator=(const Q&) = delete;
-    ~Q() { fmpq_clear(v); }
 };
 
 int sign_variations(const fmpz_poly_t p) {
@@ -150,55 +145,55 @@ double to_double(const fmpq_t t) {
 // enclosure in t rounds to one or two adjacent doubles.
 double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
               const fmpq_t width) {
-    Q a, b, mid, value, s, t_lower, t_upper;
-    fmpq_zero(a.v);
-    fmpq_one(b.v);
-    fmpz_poly_evaluate_fmpq(value.v, poly, a.v);
-    const int sign_at_a = fmpq_sgn(value.v);
+    Rational a, b, mid, value, s, t_lower, t_upper;
+    fmpq_zero(a.get());
+    fmpq_one(b.get());
+    fmpz_poly_evaluate_fmpq(value.get(), poly, a.get());
+    const int sign_at_a = fmpq_sgn(value.get());
     for (int iteration = 0; iteration < 4000; ++iteration) {
-        s_from_piece(s.v, c, k, a.v);
-        t_from_s(t_lower.v, s.v, lo, width);
-        s_from_piece(s.v, c, k, b.v);
-        t_from_s(t_upper.v, s.v, lo, width);
-        const double lower = to_double(t_lower.v);
-        const double upper = to_double(t_upper.v);
+        s_from_piece(s.get(), c, k, a.get());
+        t_from_s(t_lower.get(), s.get(), lo, width);
+        s_from_piece(s.get(), c, k, b.get());
+        t_from_s(t_upper.get(), s.get(), lo, width);
+        const double lower = to_double(t_lower.get());
+        const double upper = to_double(t_upper.get());
         // Done when both ends round to the same double, or (a root on a rounding boundary)
         // when the enclosure is far below one ulp.
-        fmpq_sub(mid.v, t_upper.v, t_lower.v);
+        fmpq_sub(mid.get(), t_upper.get(), t_lower.get());
         const double gap = std::nextafter(std::abs(lower), INFINITY) - std::abs(lower);
-        if (lower == upper || std::abs(fmpq_get_d(mid.v)) < gap / 256) {
-            fmpq_add(mid.v, t_lower.v, t_upper.v);
-            fmpq_div_2exp(mid.v, mid.v, 1);
-            return to_double(mid.v);
+        if (lower == upper || std::abs(fmpq_get_d(mid.get())) < gap / 256) {
+            fmpq_add(mid.get(), t_lower.get(), t_upper.get());
+            fmpq_div_2exp(mid.get(), mid.get(), 1);
+            return to_double(mid.get());
         }
-        fmpq_add(mid.v, a.v, b.v);
-        fmpq_div_2exp(mid.v, mid.v, 1);
-        fmpz_poly_evaluate_fmpq(value.v, poly, mid.v);
-        const int sign_at_mid = fmpq_sgn(value.v);
+        fmpq_add(mid.get(), a.get(), b.get());
+        fmpq_div_2exp(mid.get(), mid.get(), 1);
+        fmpz_poly_evaluate_fmpq(value.get(), poly, mid.get());
+        const int sign_at_mid = fmpq_sgn(value.get());
         if (sign_at_mid == 0) {
-            s_from_piece(s.v, c, k, mid.v);
-            t_from_s(t_lower.v, s.v, lo, width);
-            return to_double(t_lower.v);
+            s_from_piece(s.get(), c, k, mid.get());
+            t_from_s(t_lower.get(), s.get(), lo, width);
+            return to_double(t_lower.get());
         }
         if (sign_at_mid == sign_at_a) {
-            fmpq_set(a.v, mid.v);
+            fmpq_set(a.get(), mid.get());
         } else {
-            fmpq_set(b.v, mid.v);
+            fmpq_set(b.get(), mid.get());
         }
     }
     // Unreachable for finite doubles: each step halves the enclosure, and 4000 halvings take
     // any interval of doubles below one ulp.
-    s_from_piece(s.v, c, k, a.v);
-    t_from_s(t_lower.v, s.v, lo, width);
-    return to_double(t_lower.v);
+    s_from_piece(s.get(), c, k, a.get());
+    t_from_s(t_lower.get(), s.get(), lo, width);
+    return to_double(t_lower.get());
 }
 
 }  // namespace
 
 std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, const fmpq_t hi,
                                       bool lo_open) {
-    Q width;
-    fmpq_sub(width.v, hi, lo);
+    Rational width;
+    fmpq_sub(width.get(), hi, lo);
     // q(s) = p(lo + width·s): the interval becomes [0, 1].
     fmpq_poly_t pq, line, composed;
     fmpq_poly_init(pq);
@@ -206,7 +201,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
     fmpq_poly_init(composed);
     fmpq_poly_set_fmpz_poly(pq, p);
     fmpq_poly_set_coeff_fmpq(line, 0, lo);
-    fmpq_poly_set_coeff_fmpq(line, 1, width.v);
+    fmpq_poly_set_coeff_fmpq(line, 1, width.get());
     fmpq_poly_compose(composed, pq, line);
     IntPoly q;
     fmpq_poly_get_numerator(q.p, composed);
@@ -231,7 +226,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
         Piece piece(stack.back());
         stack.pop_back();
         if (piece.midpoint_root) {
-            Q s, t;
+            Rational s, t;
             fmpz_t numerator, denominator;
             fmpz_init(numerator);
             fmpz_init(denominator);
@@ -239,11 +234,11 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
             fmpz_add_ui(numerator, numerator, 1);
             fmpz_one(denominator);
             fmpz_mul_2exp(denominator, denominator, piece.k + 1);
-            fmpq_set_fmpz_frac(s.v, numerator, denominator);
+            fmpq_set_fmpz_frac(s.get(), numerator, denominator);
             fmpz_clear(numerator);
             fmpz_clear(denominator);
-            t_from_s(t.v, s.v, lo, width.v);
-            return to_double(t.v);
+            t_from_s(t.get(), s.get(), lo, width.get());
+            return to_double(t.get());
         }
         if (fmpz_poly_degree(piece.poly.p) <= 0) {
             continue;
@@ -253,7 +248,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
             continue;
         }
         if (bound == 1) {
-            return refine(piece.poly.p, piece.c, piece.k, lo, width.v);
+            return refine(piece.poly.p, piece.c, piece.k, lo, width.get());
         }
         // Split at the midpoint; push right, the midpoint (if a root), then left, so that the
         // left piece is examined first.
@@ -281,14 +276,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
         }
         stack.push_back(left);
     }
-    fmpz_t sum;
-    fmpz_init(sum);
-    for (slong i = 0; i < fmpz_poly_length(q.p); ++i) {
-        fmpz_add(sum, sum, q.p->coeffs + i);
-    }
-    const bool root_at_hi = fmpz_is_zero(sum);
-    fmpz_clear(sum);
-    if (root_at_hi) {
+    if (is_root_at_one(q.p)) {
         return to_double(hi);
     }
     return std::nullopt;

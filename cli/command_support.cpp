@@ -3,6 +3,8 @@
 #include <unistd.h>  // for isatty
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -89,6 +91,21 @@ void finish_progress() {
         std::fflush(stderr);
         progress_shown = false;
     }
+}
+
+bool on_path(const std::string& program) {
+    if (program.find('/') != std::string::npos) {
+        return std::filesystem::exists(program);
+    }
+    const char* path = std::getenv("PATH");
+    std::stringstream dirs(path ? path : "");
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+        if (!dir.empty() && std::filesystem::exists(std::filesystem::path(dir) / program)) {
+            return true;
+        }
+    }
+    return false;
 }
 
 }  // namespace locus::cli

@@ -38,4 +38,7 @@ std::optional<std::chrono::steady_clock::time_point> deadline_after(double secon
 std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const std::string& label);
 void finish_progress();
 
+// Is `program` an existing path, or an executable name found in a directory of PATH?
+bool on_path(const std::string& program);
+
 }  // namespace locus::cli

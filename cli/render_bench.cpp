@@ -19,9 +19,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "algebra/error.h"
+#include "bench/surface_suite.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
 #include "render/primary_rays.h"
@@ -31,47 +31,14 @@
 namespace locus::cli {
 namespace {
 
-struct SuiteSurface {
-    std::string name, equation;
-    double clip_radius = 2.0;
-};
+using bench::SuiteSurface;
 
 std::vector<SuiteSurface> read_suite(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) {
-        throw CommandFailure(exit_input, path + ": cannot open the surface suite");
+    try {
+        return bench::parse_surface_suite(read_input(path));
+    } catch (const Error& e) {
+        throw CommandFailure(exit_input, path + ": " + e.what());
     }
-    std::vector<SuiteSurface> suite;
-    std::string line;
-    auto trim = [](std::string s) {
-        const auto b = s.find_first_not_of(" \t");
-        const auto e = s.find_last_not_of(" \t\r");
-        return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-    };
-    std::size_t number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        if (trim(line).empty() || trim(line)[0] == '#') {
-            continue;
-        }
-        std::stringstream fields(line);
-        std::string name, equation, radius;
-        std::getline(fields, name, '|');
-        std::getline(fields, equation, '|');
-        std::getline(fields, radius, '|');
-        try {
-            suite.push_back({trim(name), trim(equation), std::stod(trim(radius))});
-        } catch (const std::exception&) {
-            throw CommandFailure(exit_input, path + ": line " + std::to_string(number) +
-                                                 ": expected name | equation | clip radius");
-        }
-    }
-    return suite;
-}
-
-std::string surf_equation(const std::string& equation) {
-    // surf reads the same infix syntax; only the decimal fractions need no change.
-    return equation;
 }
 
 // Seconds surf takes to draw the surface at size×size (start-up measured with an empty script
@@ -91,7 +58,7 @@ double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
                 << "clip = sphere;\nradius = " << s.clip_radius / scale << ";\n"
                 << "scale_x = " << scale << ";\nscale_y = " << scale << ";\nscale_z = " << scale
                 << ";\n"
-                << "surface = " << surf_equation(s.equation) << ";\n";
+                << "surface = " << s.equation << ";\n";
             if (draw) {
                 out << "clear_screen;\ndraw_surface;\nfilename = \"" << image.string()
                     << "\";\ncolor_file_format = ppm;\nsave_color_image;\n";
@@ -129,11 +96,6 @@ double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
         return -1.0;
     }
     return std::max(total - startup, 1e-6);
-}
-
-bool on_path(const std::string& program) {
-    const std::string command = "command -v " + program + " >/dev/null 2>&1";
-    return std::system(command.c_str()) == 0;
 }
 
 }  // namespace

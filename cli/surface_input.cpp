@@ -41,6 +41,22 @@ std::string implicit_equation_of(const std::string& param_path) {
     return equation;
 }
 
+algebra::CompiledPolynomial compile_equation(const std::string& name, const std::string& equation,
+                                             const char* use) {
+    algebra::CompiledPolynomial compiled = [&] {
+        try {
+            return algebra::compile_surface(equation);
+        } catch (const Error& e) {
+            throw CommandFailure(exit_input, name + ": " + e.what());
+        }
+    }();
+    if (compiled.made_square_free()) {
+        std::fprintf(stderr, "%s: the equation has repeated factors; %s its square-free part %s\n",
+                     name.c_str(), use, compiled.equation().c_str());
+    }
+    return compiled;
+}
+
 std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene) {
     std::vector<algebra::CompiledPolynomial> compiled;
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
@@ -49,17 +65,7 @@ std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene) 
         if (!surface.param_file.empty()) {
             surface.equation = implicit_equation_of(surface.param_file);
         }
-        try {
-            compiled.push_back(algebra::compile_surface(surface.equation));
-        } catch (const Error& e) {
-            throw CommandFailure(exit_input, name + ".equation: " + e.what());
-        }
-        if (compiled.back().made_square_free()) {
-            std::fprintf(stderr,
-                         "%s: the equation has repeated factors; rendering its square-free "
-                         "part %s\n",
-                         name.c_str(), compiled.back().equation().c_str());
-        }
+        compiled.push_back(compile_equation(name + ".equation", surface.equation, "rendering"));
     }
     return compiled;
 }

@@ -16,6 +16,12 @@ namespace locus::cli {
 // fails.
 std::string implicit_equation_of(const std::string& param_path);
 
+// Compiles one equation; errors become CommandFailure (exit 2) prefixed with `name`, and a
+// replacement by the square-free part is reported on standard error ("NAME: ... `use` its
+// square-free part ...", `use` being "rendering" or "tracing").
+algebra::CompiledPolynomial compile_equation(const std::string& name, const std::string& equation,
+                                             const char* use);
+
 // Resolves `param` surfaces to equations, then compiles every surface; errors name the surface
 // (`surface[2].equation: line 1, column 5: ...`). Reports on standard error when an equation
 // was replaced by its square-free part.

@@ -12,6 +12,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/surface_input.h"
 #include "render/surface_tracer.h"
 
 namespace locus::cli {
@@ -28,17 +29,7 @@ int run_trace(const TraceArgs& args) {
     if (!(args.t_max > 0.0) || !std::isfinite(args.t_max)) {
         throw CommandFailure(exit_input, "--t-max: expected a positive number");
     }
-    algebra::CompiledPolynomial f = [&] {
-        try {
-            return algebra::compile_surface(args.equation);
-        } catch (const Error& e) {
-            throw CommandFailure(exit_input, "equation: " + std::string(e.what()));
-        }
-    }();
-    if (f.made_square_free()) {
-        std::fprintf(stderr, "equation has repeated factors; tracing its square-free part %s\n",
-                     f.equation().c_str());
-    }
+    const algebra::CompiledPolynomial f = compile_equation("equation", args.equation, "tracing");
     const render::SurfaceTracer tracer(f, method, 1.0);
     std::string line;
     std::size_t line_number = 0;

@@ -52,7 +52,8 @@ concept RootFinder = requires(const T& finder, const RayPolynomial& f, double lo
     { T::name } -> std::convertible_to<std::string_view>;
 };
 
-// Sturm sequence isolation of the first root, then safeguarded refinement (Illinois).
+// Sturm sequence isolation of the first root, then safeguarded refinement (bracketed Halley
+// steps with a regula falsi fallback).
 struct SturmRootFinder {
     static constexpr std::string_view name = "sturm";
     RootResult first_root(const RayPolynomial& f, double lo, double hi) const;

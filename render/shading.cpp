@@ -54,6 +54,12 @@ double Shader::visibility(const Vec3& point, const Vec3& normal, const Light& li
                           std::uint64_t seed, int& work) const {
     const Vec3 origin = point + (1e-4 * scale_) * normal;
     const int samples = light.radius > 0.0 ? std::max(1, options_.soft_shadow_samples) : 1;
+    // The light's disk is spanned by a frame around the direction to it, the same for all
+    // samples of this point.
+    Vec3 a, b;
+    frame_around(light.kind == Light::Kind::directional ? light.direction
+                                                        : glm::normalize(light.position - point),
+                 a, b);
     int visible = 0;
     for (int s = 0; s < samples; ++s) {
         // A point on the light's disk (stratified in angle, random in radius).
@@ -63,16 +69,12 @@ double Shader::visibility(const Vec3& point, const Vec3& normal, const Light& li
         Ray ray{origin, {}};
         double t_max = 1.0;
         if (light.kind == Light::Kind::directional) {
-            Vec3 a, b;
-            frame_around(light.direction, a, b);
             const double spread = std::tan(light.radius) * r;
             ray.direction = light.direction + spread * (std::cos(angle) * a + std::sin(angle) * b);
             t_max = 1e3 * scale_;
         } else {
             Vec3 target = light.position;
             if (light.radius > 0.0) {
-                Vec3 a, b;
-                frame_around(glm::normalize(light.position - point), a, b);
                 target += light.radius * r * (std::cos(angle) * a + std::sin(angle) * b);
             }
             ray.direction = target - origin;

@@ -31,7 +31,6 @@ RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
     if (interval.is_empty()) {
         return {};
     }
-    const double speed = glm::length(ray.direction);
     switch (method_) {
     case TraceMethod::exact: {
         const algebra::ExactRoot root = algebra::exact_first_root(
@@ -53,19 +52,20 @@ RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
         break;
     }
     if (restriction != nullptr) {
-        return on_restriction(*restriction, restriction_origin, interval, speed);
+        return on_restriction(*restriction, restriction_origin, interval, ray);
     }
     const double middle = 0.5 * (interval.lo + interval.hi);
     const RayPolynomial computed = restrictor_.restrict_to(ray.at(middle), ray.direction);
-    return on_restriction(computed, middle, interval, speed);
+    return on_restriction(computed, middle, interval, ray);
 }
 
 RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, double origin,
-                                         Interval interval, double speed) const {
+                                         Interval interval, const Ray& ray) const {
     const Interval shifted{interval.lo - origin, interval.hi - origin};
     RootResult found;
     if (method_ == TraceMethod::sphere_lipschitz) {
-        found = sphere_trace_lipschitz(restriction, shifted, 1e-9 * scale_ / speed);
+        found = sphere_trace_lipschitz(restriction, shifted,
+                                       1e-9 * scale_ / glm::length(ray.direction));
     } else {
         found = first_root(finder_, restriction, shifted.lo, shifted.hi);
         if (found.status == RootStatus::unknown && method_ != TraceMethod::bernstein) {

@@ -38,7 +38,7 @@ class SurfaceTracer {
 
   private:
     RootResult on_restriction(const RayPolynomial& restriction, double origin, Interval interval,
-                              double speed) const;
+                              const Ray& ray) const;
 
     const algebra::CompiledPolynomial* f_;
     LineRestrictor restrictor_;

@@ -9,7 +9,7 @@
 namespace locus::render {
 
 enum class TraceMethod {
-    sturm,             // Sturm isolation on F(t), then Illinois
+    sturm,             // Sturm isolation on F(t), then bracketed Halley
     bernstein,         // Descartes/Bernstein subdivision on F(t)
     laguerre,          // Laguerre with deflation on F(t), polished
     eigen,             // companion-matrix eigenvalues of F(t), polished

@@ -119,6 +119,24 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
         return detail::refine_root(u, false, a, b, ga, gb, work);
     };
 
+    // G on [a, b] (width h, values ga, gb) with at most one root: it by refinement when the ends
+    // differ in sign, else a touch at an end; empty when neither settles the piece.
+    const auto settle_by_ends = [&](double a, double b, double h, double ga,
+                                    double gb) -> std::optional<RootResult> {
+        if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
+            if (const double t = refine(a, b, ga, gb); !std::isnan(t)) {
+                return detail::hit(t, work);
+            }
+        }
+        if (touches_at(a)) {
+            return at_end(a, h);
+        }
+        if (touches_at(b)) {
+            return at_end(b, h);
+        }
+        return std::nullopt;
+    };
+
     // G on [a, b] (width h, values ga, gb) with one critical point, located roughly at tc:
     // monotone on [a, c] and on [c, b]. A rough c is enough to bracket a root in [a, c], or to
     // rule out a tangent when |G(c)| exceeds what the error in c can hide (|G''| ≤ n²(n+1) on
@@ -193,22 +211,13 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
         if (variations == 0 && smallest > touch) {
             // The control polygon stays clear of zero: no root here.
         } else if (variations == 1) {
-            // Exactly one root, a sign change of G: refine on the power form.
+            // Exactly one root, a sign change of G: refine on the power form. If rounding
+            // disagrees with the polygon (a root within noise of an end, or a polygon blurred
+            // by rounding), a closer look settles it.
             const double ga = detail::horner(g.data(), n, a);
             const double gb = detail::horner(g.data(), n, b);
-            if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
-                const double t = refine(a, b, ga, gb);
-                if (!std::isnan(t)) {
-                    return detail::hit(t, work);
-                }
-            }
-            // Rounding disagrees with the polygon: a root within noise of an end, or a polygon
-            // blurred by rounding that a closer look settles.
-            if (touches_at(a)) {
-                return at_end(a, width);
-            }
-            if (touches_at(b)) {
-                return at_end(b, width);
+            if (const std::optional<RootResult> r = settle_by_ends(a, b, width, ga, gb)) {
+                return *r;
             }
             subdivide = true;
         } else {
@@ -221,17 +230,8 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
             const double ga = detail::horner(g.data(), n, a);
             const double gb = detail::horner(g.data(), n, b);
             if (turns == 0) {
-                if (ga != 0.0 && gb != 0.0 && (ga < 0.0) != (gb < 0.0)) {
-                    const double t = refine(a, b, ga, gb);
-                    if (!std::isnan(t)) {
-                        return detail::hit(t, work);
-                    }
-                }
-                if (touches_at(a)) {
-                    return at_end(a, width);
-                }
-                if (touches_at(b)) {
-                    return at_end(b, width);
+                if (const std::optional<RootResult> r = settle_by_ends(a, b, width, ga, gb)) {
+                    return *r;
                 }
             } else if (turns == 1) {
                 const double da = detail::horner(dg.data(), n - 1, a);

@@ -102,11 +102,13 @@ TEST(Implicitize, EnneperHasDegreeNine) {
     EXPECT_TRUE(vanishes_on(*r.equation, map));
 }
 
+// Enneper's surface (degree 9) and the trigonometric torus: the larger classic surfaces.
+const char* const kEnneperAndTorus[] = {
+    "params: u,v\nx = u - u^3/3 + u*v^2\ny = v - v^3/3 + v*u^2\nz = u^2 - v^2\n",
+    "params: u,v\nx = (2+cos(v))*cos(u)\ny = (2+cos(v))*sin(u)\nz = sin(v)\n"};
+
 TEST(Implicitize, ResultantAgreesOnEnneperAndTorusAndRefusesSpaceCurves) {
-    const char* files[] = {
-        "params: u,v\nx = u - u^3/3 + u*v^2\ny = v - v^3/3 + v*u^2\nz = u^2 - v^2\n",
-        "params: u,v\nx = (2+cos(v))*cos(u)\ny = (2+cos(v))*sin(u)\nz = sin(v)\n"};
-    for (const char* f : files) {
+    for (const char* f : kEnneperAndTorus) {
         SCOPED_TRACE(f);
         const Parametrization map = parse_parametrization(f);
         EXPECT_EQ(implicitize_by_resultant(map).equation, implicitize(map).equation);
@@ -116,10 +118,7 @@ TEST(Implicitize, ResultantAgreesOnEnneperAndTorusAndRefusesSpaceCurves) {
 }
 
 TEST(Implicitize, InterpolationAgreesOnEnneperAndTorusAndGivesUpOnDegenerateMaps) {
-    const char* files[] = {
-        "params: u,v\nx = u - u^3/3 + u*v^2\ny = v - v^3/3 + v*u^2\nz = u^2 - v^2\n",
-        "params: u,v\nx = (2+cos(v))*cos(u)\ny = (2+cos(v))*sin(u)\nz = sin(v)\n"};
-    for (const char* f : files) {
+    for (const char* f : kEnneperAndTorus) {
         SCOPED_TRACE(f);
         const Parametrization map = parse_parametrization(f);
         EXPECT_EQ(implicitize_by_interpolation(map).equation, implicitize(map).equation);

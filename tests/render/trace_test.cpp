@@ -5,11 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <random>
-#include <sstream>
 
+#include "bench/surface_suite.h"
 #include "render/trace_method.h"
 #include "tests/support/test_data.h"
 
@@ -141,51 +140,36 @@ TEST_P(EveryMethod, TangentRayToASphereIsAHit) {
 
 INSTANTIATE_TEST_SUITE_P(Trace, EveryMethod, ::testing::ValuesIn(all_trace_methods()), method_name);
 
-struct SuiteSurface {
-    std::string name, equation;
-    double radius;
-};
+using bench::SuiteSurface;
 
 std::vector<SuiteSurface> suite() {
-    std::ifstream in(test::source_dir() + "/bench/data/surfaces/SUITE.txt");
-    std::vector<SuiteSurface> surfaces;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') {
-            continue;
-        }
-        std::stringstream fields(line);
-        std::string name, equation, radius;
-        std::getline(fields, name, '|');
-        std::getline(fields, equation, '|');
-        std::getline(fields, radius, '|');
-        surfaces.push_back({name.substr(0, name.find(' ')), equation, std::stod(radius)});
-    }
-    return surfaces;
+    return bench::parse_surface_suite(
+        test::read_text(test::source_dir() + "/bench/data/surfaces/SUITE.txt"));
 }
 
 // Counts rays on which `method` disagrees with `exact` (hit/miss, undecided, or distance above
 // 1e-6 × the clip radius), over random rays from outside the clip sphere through it.
 int wrong_rays(const SuiteSurface& surface, TraceMethod method, int rays) {
     const algebra::CompiledPolynomial f = algebra::compile_surface(surface.equation);
-    const SurfaceTracer tracer(f, method, surface.radius);
-    const SurfaceTracer exact(f, TraceMethod::exact, surface.radius);
+    const SurfaceTracer tracer(f, method, surface.clip_radius);
+    const SurfaceTracer exact(f, TraceMethod::exact, surface.clip_radius);
     std::mt19937_64 rng(std::hash<std::string>{}(surface.name));
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     int wrong = 0;
     for (int i = 0; i < rays; ++i) {
-        const Vec3 origin = 3.0 * surface.radius * random_unit(rng);
-        const Vec3 aim = surface.radius * 0.8 * Vec3{unit(rng), unit(rng), unit(rng)};
+        const Vec3 origin = 3.0 * surface.clip_radius * random_unit(rng);
+        const Vec3 aim = surface.clip_radius * 0.8 * Vec3{unit(rng), unit(rng), unit(rng)};
         const Ray ray{origin, glm::normalize(aim - origin)};
         // The clip sphere's interval along the ray.
         const double b = glm::dot(origin, ray.direction);
-        const double c = glm::dot(origin, origin) - surface.radius * surface.radius;
+        const double c = glm::dot(origin, origin) - surface.clip_radius * surface.clip_radius;
         const double root = std::sqrt(b * b - c);
         const Interval interval{-b - root, -b + root};
         const RootResult mine = tracer.first_hit(ray, interval);
         const RootResult truth = exact.first_hit(ray, interval);
-        if (mine.status != truth.status || (mine.status == RootStatus::hit &&
-                                            std::abs(mine.t - truth.t) > 1e-6 * surface.radius)) {
+        if (mine.status != truth.status ||
+            (mine.status == RootStatus::hit &&
+             std::abs(mine.t - truth.t) > 1e-6 * surface.clip_radius)) {
             ++wrong;
         }
     }
