@@ -5,7 +5,7 @@ JOBS ?= 2
 BUILD := build/$(PRESET)
 LOCUS := $(BUILD)/cli/locus
 
-.PHONY: all deps configure build demo test bench format clean
+.PHONY: all deps configure build demo test bench notebooks format clean
 
 all: build
 
@@ -26,6 +26,9 @@ test: build
 
 bench: build
 	$(LOCUS) bench groebner
+
+notebooks: deps
+	scripts/run-notebooks
 
 format:
 	@git ls-files '*.h' '*.cpp' | xargs clang-format -i
