@@ -15,6 +15,7 @@
 #include "render/image_output.h"
 #include "render/renderer.h"
 #include "render/scene_file.h"
+#include "render/sdf/sdf_renderer.h"
 
 namespace locus::cli {
 namespace {
@@ -128,7 +129,7 @@ render::Scene build_scene(const RenderArgs& args) {
     render::Scene scene;
     if (is_scene_file) {
         try {
-            scene = render::parse_scene(read_input(args.input));
+            scene = render::parse_scene(read_input(args.input), scene_surface_compiler());
         } catch (const Error& e) {
             throw CommandFailure(exit_input, args.input + ": " + e.what());
         }
@@ -169,7 +170,9 @@ int run_render(const RenderArgs& args) {
     execution.threads = scene.options.threads;
     execution.progress = terminal_fraction_progress();
     render::RenderStats stats;
-    const render::RenderedImage image = render::render(scene, compiled, execution, &stats);
+    const render::RenderedImage image =
+        scene.objects.empty() ? render::render(scene, compiled, execution, &stats)
+                              : render::render_sdf_scene(scene, compiled, execution, &stats);
     if (execution.progress) {
         std::fprintf(stderr, "\r\033[K");
     }
@@ -180,6 +183,10 @@ int run_render(const RenderArgs& args) {
                  scene.width, scene.height, scene.options.samples, scene.options.samples,
                  std::string(render::to_string(scene.options.method)).c_str(), stats.seconds,
                  stats.primary_rays / stats.seconds * 1e-6, stats.hits, stats.unknown);
+    if (!scene.objects.empty()) {
+        std::fprintf(stderr, "scene tree: %.1f primitive evaluations per primary ray\n",
+                     static_cast<double>(stats.primary_work) / stats.primary_rays);
+    }
     for (const std::string& path : written) {
         std::fprintf(stderr, "wrote %s\n", path.c_str());
     }

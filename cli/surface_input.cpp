@@ -70,4 +70,14 @@ std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene) 
     return compiled;
 }
 
+render::SurfaceCompiler scene_surface_compiler() {
+    return [](const render::AlgebraicSource& source) {
+        if (source.param_file.empty()) {
+            return compile_equation(source.key + ".equation", source.equation, "rendering");
+        }
+        return compile_equation(source.key + ".param", implicit_equation_of(source.param_file),
+                                "rendering");
+    };
+}
+
 }  // namespace locus::cli

@@ -27,4 +27,8 @@ algebra::CompiledPolynomial compile_equation(const std::string& name, const std:
 // was replaced by its square-free part.
 std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene);
 
+// The compiler for algebraic leaves of scene trees: implicitizes `param` files as above and
+// compiles with the same reports; errors name the leaf ("object[2].equation: ...").
+render::SurfaceCompiler scene_surface_compiler();
+
 }  // namespace locus::cli

@@ -24,7 +24,13 @@ CameraSpec default_camera(const Scene& scene) {
         low = glm::min(low, sphere.center - Vec3(sphere.radius));
         high = glm::max(high, sphere.center + Vec3(sphere.radius));
     }
-    if (scene.surfaces.empty()) {
+    for (const sdf::NodePtr& object : scene.objects) {
+        if (object->bounds().is_finite()) {
+            low = glm::min(low, object->bounds().min);
+            high = glm::max(high, object->bounds().max);
+        }
+    }
+    if (!(low.x <= high.x)) {
         low = Vec3(-2.0);
         high = Vec3(2.0);
     }

@@ -3,12 +3,15 @@
 // sets only what differs.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "algebra/compiled.h"
 #include "render/camera.h"
 #include "render/clip_region.h"
+#include "render/sdf/node.h"
 #include "render/trace_method.h"
 
 namespace locus::render {
@@ -59,8 +62,22 @@ struct Scene {
     std::optional<CameraSpec> camera;  // none: framed on the clip regions (default_camera)
     std::vector<Light> lights;         // empty: default_lights()
     std::vector<Surface> surfaces;
+    // The SDF scene tree ([[object]] in scene files, render/sdf/): when present, the scene is
+    // rendered by render_sdf_scene, with the surfaces above as exactly traced leaves.
+    std::vector<sdf::NodePtr> objects;
     RenderOptions options;
 };
+
+// Where an algebraic leaf of the scene tree comes from; `key` names it in errors
+// ("object[3].children[1]").
+struct AlgebraicSource {
+    std::string equation;
+    std::string param_file;
+    std::string key;
+};
+// Compiles an algebraic leaf. The command line passes one that implicitizes .param files and
+// reports square-free replacements; without one, scene files with algebraic objects are refused.
+using SurfaceCompiler = std::function<algebra::CompiledPolynomial(const AlgebraicSource&)>;
 
 // Two directional lights: a warm key from the upper left front, a cool fill from the right.
 std::vector<Light> default_lights();

@@ -1,174 +1,16 @@
 #include "render/scene_file.h"
 
-#include <set>
-#include <sstream>
 #include <string>
 
-#include <toml++/toml.h>
-
-#include "algebra/error.h"
+#include "render/detail/toml_reader.h"
+#include "render/sdf/node_reader.h"
 
 namespace locus::render {
 
 namespace {
 
-std::string position(const toml::node& node) {
-    const toml::source_position begin = node.source().begin;
-    return "line " + std::to_string(begin.line) + ", column " + std::to_string(begin.column);
-}
-
-std::string describe(const toml::node& node) {
-    std::ostringstream out;
-    switch (node.type()) {
-    case toml::node_type::string:
-        out << '"' << node.as_string()->get() << '"';
-        break;
-    case toml::node_type::table:
-        out << "a table";
-        break;
-    case toml::node_type::array:
-        out << "an array of " << node.as_array()->size();
-        break;
-    default:
-        node.visit([&](const auto& value) { out << value; });
-    }
-    return out.str();
-}
-
-// Reads one TOML table, remembering which keys were used so that the rest can be reported.
-class TableReader {
-  public:
-    TableReader(const toml::table& table, std::string path)
-        : table_(table), path_(std::move(path)) {}
-
-    [[noreturn]] void fail(const toml::node& node, const std::string& key,
-                           const std::string& expected) const {
-        throw InputError(position(node) + ": " + path_ + key,
-                         "expected " + expected + ", found " + describe(node));
-    }
-
-    const toml::node* find(const std::string& key) {
-        used_.insert(key);
-        return table_.get(key);
-    }
-
-    double number(const std::string& key, double fallback, bool positive = false) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return fallback;
-        }
-        std::optional<double> value = node->value<double>();
-        if (!value || !std::isfinite(*value) || (positive && !(*value > 0.0))) {
-            fail(*node, key, positive ? "a positive number" : "a number");
-        }
-        return *value;
-    }
-
-    double non_negative(const std::string& key, double fallback) {
-        const toml::node* node = find(key);
-        const double value = number(key, fallback);
-        if (node != nullptr && value < 0.0) {
-            fail(*node, key, "a number ≥ 0");
-        }
-        return value;
-    }
-
-    int count(const std::string& key, int fallback, int low, int high) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return fallback;
-        }
-        const std::optional<std::int64_t> value = node->value<std::int64_t>();
-        if (!node->is_integer() || !value || *value < low || *value > high) {
-            fail(*node, key,
-                 "an integer from " + std::to_string(low) + " to " + std::to_string(high));
-        }
-        return static_cast<int>(*value);
-    }
-
-    bool flag(const std::string& key, bool fallback) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return fallback;
-        }
-        if (!node->is_boolean()) {
-            fail(*node, key, "true or false");
-        }
-        return *node->value<bool>();
-    }
-
-    std::optional<std::string> text(const std::string& key) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return std::nullopt;
-        }
-        if (!node->is_string()) {
-            fail(*node, key, "a string");
-        }
-        return std::string(*node->value<std::string_view>());
-    }
-
-    Vec3 vector(const std::string& key, Vec3 fallback) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return fallback;
-        }
-        const toml::array* array = node->as_array();
-        if (array == nullptr || array->size() != 3) {
-            fail(*node, key, "an array of three numbers");
-        }
-        Vec3 v;
-        for (int i = 0; i < 3; ++i) {
-            const std::optional<double> value =
-                (*array)[static_cast<std::size_t>(i)].value<double>();
-            if (!value || !std::isfinite(*value)) {
-                fail(*node, key, "an array of three numbers");
-            }
-            v[i] = *value;
-        }
-        return v;
-    }
-
-    const toml::table* subtable(const std::string& key) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return nullptr;
-        }
-        if (!node->is_table()) {
-            fail(*node, key, "a table");
-        }
-        return node->as_table();
-    }
-
-    const toml::array* array_of_tables(const std::string& key) {
-        const toml::node* node = find(key);
-        if (node == nullptr) {
-            return nullptr;
-        }
-        if (!node->is_array_of_tables()) {
-            fail(*node, key, "an array of tables ([[" + key + "]])");
-        }
-        return node->as_array();
-    }
-
-    // Rejects every key that was not asked for.
-    void finish() const {
-        for (const auto& [key, node] : table_) {
-            const std::string name(key.str());
-            if (!used_.contains(name)) {
-                const toml::source_position begin = key.source().begin;
-                throw InputError("line " + std::to_string(begin.line) + ", column " +
-                                     std::to_string(begin.column) + ": " + path_ + name,
-                                 "unknown key");
-            }
-        }
-    }
-
-  private:
-    const toml::table& table_;
-    std::string path_;
-    std::set<std::string> used_;
-};
+using detail::position;
+using detail::TableReader;
 
 Material read_material(const toml::table& table, const std::string& path) {
     TableReader r(table, path);
@@ -246,7 +88,7 @@ Light read_light(const toml::table& table, const std::string& path) {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text) {
+Scene parse_scene(std::string_view text, const SurfaceCompiler& compile) {
     toml::table root;
     try {
         root = toml::parse(text);
@@ -297,9 +139,16 @@ Scene parse_scene(std::string_view text) {
         scene.options.threads = ro.count("threads", scene.options.threads, 0, 1024);
         ro.finish();
     }
+    const toml::table* materials = r.subtable("materials");
+    if (const toml::array* objects = r.array_of_tables("object")) {
+        scene.objects = sdf::read_objects(*objects, materials, compile, scene.options.method);
+    } else if (materials != nullptr) {
+        throw InputError(position(*root.get("materials")) + ": materials",
+                         "named materials are for [[object]] trees; this scene has none");
+    }
     r.finish();
-    if (scene.surfaces.empty()) {
-        throw InputError("surface", "a scene needs at least one [[surface]]");
+    if (scene.surfaces.empty() && scene.objects.empty()) {
+        throw InputError("surface", "a scene needs at least one [[surface]] or [[object]]");
     }
     return scene;
 }

@@ -12,6 +12,9 @@
 //     [render]   method = "sturm"  samples = 2  shadows = true  ambient_occlusion = false
 //                threads = 0
 //
+// The SDF scene tree — [[object]] tables with nested [[object.children]] and named
+// [materials.NAME] — is read by render/sdf/node_reader.h; docs/sdf-scenes.md has the format.
+//
 // Every error names the key (as a dotted path) and its position: a TOML syntax error is a
 // ParseError with line and column; an unknown key, a value of the wrong type or out of range
 // is an InputError such as "line 4, column 1: surface[1].clip_radius: expected a positive
@@ -24,6 +27,7 @@
 
 namespace locus::render {
 
-Scene parse_scene(std::string_view text);
+// `compile` turns the algebraic leaves of [[object]] trees into compiled polynomials.
+Scene parse_scene(std::string_view text, const SurfaceCompiler& compile = {});
 
 }  // namespace locus::render

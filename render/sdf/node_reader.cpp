@@ -1,0 +1,373 @@
+#include "render/sdf/node_reader.h"
+
+#include <map>
+
+#include "render/detail/toml_reader.h"
+#include "render/sdf/algebraic_leaf.h"
+#include "render/sdf/booleans.h"
+#include "render/sdf/deformations.h"
+#include "render/sdf/domain.h"
+#include "render/sdf/primitives.h"
+#include "render/sdf/transforms.h"
+
+namespace locus::render::sdf {
+
+namespace {
+
+using detail::position;
+using detail::TableReader;
+
+constexpr std::string_view kNodeTypes =
+    "sphere, plane, box, rounded_box, torus, cylinder, cone, capsule, ellipsoid, superquadric, "
+    "soft_objects, algebraic, group, union, intersection, difference, smooth_union, "
+    "smooth_intersection, smooth_difference";
+
+class Reader {
+  public:
+    Reader(const toml::table* materials, const SurfaceCompiler& compile, TraceMethod method)
+        : compile_(compile), method_(method) {
+        if (materials == nullptr) {
+            return;
+        }
+        for (const auto& [key, node] : *materials) {
+            const std::string name(key.str());
+            if (!node.is_table()) {
+                throw InputError(position(node) + ": materials." + name,
+                                 "expected a table ([materials." + name + "])");
+            }
+            materials_[name] = read_material(*node.as_table(), "materials." + name + ".");
+        }
+    }
+
+    NodePtr read(const toml::table& table, const std::string& path, const MaterialPtr& inherited) {
+        TableReader r(table, path);
+        MaterialPtr material = inherited;
+        if (const auto name = r.text("material")) {
+            const auto found = materials_.find(*name);
+            if (found == materials_.end()) {
+                throw InputError(position(*table.get("material")) + ": " + path + "material",
+                                 "no [materials." + *name + "] in this scene");
+            }
+            material = found->second;
+        }
+        const toml::node* type_node = r.find("type");
+        if (type_node == nullptr) {
+            throw InputError(position(table) + ": " + path + "type",
+                             std::string("missing; expected one of ") + std::string(kNodeTypes));
+        }
+        const std::string type = r.text("type").value_or("");
+        NodePtr node;
+        try {
+            node = shape(type, r, table, path, material);
+            if (!node) {
+                r.fail(*type_node, "type",
+                       std::string("a node type (") + std::string(kNodeTypes) + ")");
+            }
+            node = deform(std::move(node), r, path);
+        } catch (const InputError& e) {
+            // Factories name the parameter; add where it is.
+            if (e.subject().find("line ") == 0) {
+                throw;
+            }
+            const std::string what = e.what();
+            const toml::node* at = table.get(e.subject());
+            throw InputError(position(at != nullptr ? *at : table) + ": " + path + e.subject(),
+                             what.substr(e.subject().size() + 2));
+        }
+        r.finish();
+        return node;
+    }
+
+  private:
+    MaterialPtr read_material(const toml::table& table, const std::string& path) {
+        TableReader r(table, path);
+        auto m = std::make_shared<NodeMaterial>();
+        Look& look = m->look;
+        look.color = r.vector("color", look.color);
+        look.inside = r.vector("inside", look.color);
+        look.ambient = r.non_negative("ambient", look.ambient);
+        look.diffuse = r.non_negative("diffuse", look.diffuse);
+        look.specular = r.non_negative("specular", look.specular);
+        look.shininess = r.number("shininess", look.shininess, true);
+        if (r.find("checker") != nullptr) {
+            m->checker = true;
+            m->checker_color = r.vector("checker", m->checker_color);
+        }
+        m->checker_size = r.number("checker_size", m->checker_size, true);
+        r.finish();
+        return m;
+    }
+
+    std::vector<NodePtr> children(TableReader& r, const toml::table& table, const std::string& path,
+                                  const MaterialPtr& material) {
+        const toml::array* list = r.array_of_tables("children");
+        if (list == nullptr || list->empty()) {
+            throw InputError(position(table) + ": " + path + "children",
+                             "an operation needs at least one child ([[...children]])");
+        }
+        std::vector<NodePtr> nodes;
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            nodes.push_back(read(*(*list)[i].as_table(),
+                                 path + "children[" + std::to_string(i + 1) + "].", material));
+        }
+        return nodes;
+    }
+
+    Blend blend(TableReader& r, const std::string& path, const toml::table& table) {
+        Blend b;
+        const std::string kind = r.text("blend").value_or("polynomial");
+        if (kind == "polynomial") {
+            b.kind = BlendKind::polynomial;
+        } else if (kind == "exponential") {
+            b.kind = BlendKind::exponential;
+        } else if (kind == "root") {
+            b.kind = BlendKind::root;
+        } else {
+            throw InputError(
+                position(*table.get("blend")) + ": " + path + "blend",
+                "expected \"polynomial\", \"exponential\" or \"root\", found \"" + kind + "\"");
+        }
+        b.k = r.number("k", b.k, true);
+        b.order = r.count("n", b.order, 2, 8);
+        return b;
+    }
+
+    ClipRegion clip(TableReader& r, const toml::table& table, const std::string& path) {
+        const std::string shape = r.text("clip").value_or("sphere");
+        if (shape == "sphere") {
+            ClipSphere sphere;
+            sphere.radius = r.number("clip_radius", sphere.radius, true);
+            sphere.center = r.vector("clip_center", sphere.center);
+            return sphere;
+        }
+        if (shape == "box") {
+            ClipBox box;
+            box.min = r.vector("clip_min", box.min);
+            box.max = r.vector("clip_max", box.max);
+            if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) {
+                throw InputError(position(table) + ": " + path + "clip_min",
+                                 "must be below clip_max in every coordinate");
+            }
+            return box;
+        }
+        throw InputError(position(*table.get("clip")) + ": " + path + "clip",
+                         "expected \"sphere\" or \"box\", found \"" + shape + "\"");
+    }
+
+    NodePtr algebraic(TableReader& r, const toml::table& table, const std::string& path,
+                      const MaterialPtr& material) {
+        AlgebraicSource source;
+        source.equation = r.text("equation").value_or("");
+        source.param_file = r.text("param").value_or("");
+        source.key = path.substr(0, path.size() - 1);
+        if (source.equation.empty() == source.param_file.empty()) {
+            throw InputError(position(table) + ": " + source.key,
+                             "give exactly one of 'equation' and 'param'");
+        }
+        const ClipRegion region = clip(r, table, path);
+        Material two_sided;
+        if (material) {
+            two_sided.outside = material->look.color;
+            two_sided.inside = material->look.inside;
+            two_sided.ambient = material->look.ambient;
+            two_sided.diffuse = material->look.diffuse;
+            two_sided.specular = material->look.specular;
+            two_sided.shininess = material->look.shininess;
+        }
+        if (!compile_) {
+            throw InputError(source.key, "algebraic leaves need a surface compiler");
+        }
+        auto compiled = std::make_shared<const algebra::CompiledPolynomial>(compile_(source));
+        return make_algebraic(std::move(compiled), region, two_sided, method_);
+    }
+
+    NodePtr shape(const std::string& type, TableReader& r, const toml::table& table,
+                  const std::string& path, const MaterialPtr& inherited) {
+        const MaterialPtr m = inherited ? inherited : default_material();
+        if (type == "sphere") {
+            return make_sphere(r.number("radius", 1.0), m);
+        }
+        if (type == "plane") {
+            return make_plane(r.vector("normal", {0, 1, 0}), r.number("offset", 0.0), m);
+        }
+        if (type == "box") {
+            return make_box(r.vector("half_size", Vec3(0.5)), 0.0, m);
+        }
+        if (type == "rounded_box") {
+            return make_box(r.vector("half_size", Vec3(0.5)), r.number("rounding", 0.1), m);
+        }
+        if (type == "torus") {
+            return make_torus(r.number("major_radius", 1.0), r.number("minor_radius", 0.25), m);
+        }
+        if (type == "cylinder") {
+            return make_cylinder(r.number("radius", 0.5), r.number("half_height", 0.5), m);
+        }
+        if (type == "cone") {
+            return make_cone(r.number("bottom_radius", 0.5), r.number("top_radius", 0.0),
+                             r.number("half_height", 0.5), m);
+        }
+        if (type == "capsule") {
+            return make_capsule(r.vector("a", {0, -0.5, 0}), r.vector("b", {0, 0.5, 0}),
+                                r.number("radius", 0.25), m);
+        }
+        if (type == "ellipsoid") {
+            return make_ellipsoid(r.vector("radii", {1.0, 0.6, 0.4}), m);
+        }
+        if (type == "superquadric") {
+            return make_superquadric(r.vector("radii", Vec3(1.0)), r.number("exponent", 4.0), m);
+        }
+        if (type == "soft_objects") {
+            std::vector<Metaball> balls;
+            const toml::array* list = r.array_of_tables("balls");
+            if (list == nullptr) {
+                throw InputError(position(table) + ": " + path + "balls",
+                                 "soft objects need balls = [{center = [...], radius = ...}]");
+            }
+            for (std::size_t i = 0; i < list->size(); ++i) {
+                TableReader rb(*(*list)[i].as_table(),
+                               path + "balls[" + std::to_string(i + 1) + "].");
+                Metaball ball;
+                ball.center = rb.vector("center", ball.center);
+                ball.radius = rb.number("radius", ball.radius, true);
+                ball.weight = rb.number("weight", ball.weight);
+                rb.finish();
+                balls.push_back(ball);
+            }
+            return make_soft_objects(std::move(balls), r.number("threshold", 0.5), m);
+        }
+        if (type == "algebraic") {
+            return algebraic(r, table, path, inherited);
+        }
+        if (type == "group" || type == "union") {
+            return make_union(children(r, table, path, inherited));
+        }
+        if (type == "intersection") {
+            return make_intersection(children(r, table, path, inherited));
+        }
+        if (type == "difference") {
+            return make_difference(children(r, table, path, inherited));
+        }
+        if (type == "smooth_union" || type == "smooth_intersection" ||
+            type == "smooth_difference") {
+            const Blend b = blend(r, path, table);
+            std::vector<NodePtr> nodes = children(r, table, path, inherited);
+            if (type == "smooth_union") {
+                return make_smooth_union(std::move(nodes), b);
+            }
+            if (type == "smooth_intersection") {
+                return make_smooth_intersection(std::move(nodes), b);
+            }
+            return make_smooth_difference(std::move(nodes), b);
+        }
+        return nullptr;
+    }
+
+    // Deformations, then symmetry and repetition, then the placement, in this order; a
+    // `group` with one child applies them in another order.
+    NodePtr deform(NodePtr node, TableReader& r, const std::string& path) {
+        if (r.find("elongate") != nullptr) {
+            node = make_elongate(std::move(node), r.vector("elongate", Vec3(0.0)));
+        }
+        if (r.find("round") != nullptr) {
+            node = make_round(std::move(node), r.number("round", 0.0));
+        }
+        if (const toml::table* noise = r.subtable("displace")) {
+            TableReader rn(*noise, path + "displace.");
+            const double amplitude = rn.number("amplitude", 0.05, true);
+            const double frequency = rn.number("frequency", 4.0, true);
+            const int octaves = rn.count("octaves", 3, 1, 12);
+            const int seed = rn.count("seed", 1, 0, 1 << 30);
+            rn.finish();
+            node = make_displace(std::move(node),
+                                 Noise(amplitude, frequency, octaves, static_cast<unsigned>(seed)));
+        }
+        if (r.find("bend") != nullptr) {
+            node = make_bend(std::move(node), r.number("bend", 0.0));
+        }
+        if (r.find("twist") != nullptr) {
+            node = make_twist(std::move(node), r.number("twist", 0.0));
+        }
+        if (r.find("repeat") != nullptr) {
+            const Vec3 spacing = r.vector("repeat", Vec3(0.0));
+            std::array<std::optional<int>, 3> counts{};
+            if (const toml::node* count = r.find("repeat_count")) {
+                const toml::array* array = count->as_array();
+                if (array == nullptr || array->size() != 3) {
+                    r.fail(*count, "repeat_count", "three integers ≥ 0 (copies each side)");
+                }
+                for (std::size_t i = 0; i < 3; ++i) {
+                    const auto value = (*array)[i].value<std::int64_t>();
+                    if (!(*array)[i].is_integer() || !value || *value < 0 || *value > 10000) {
+                        r.fail(*count, "repeat_count", "three integers ≥ 0 (copies each side)");
+                    }
+                    counts[i] = static_cast<int>(*value);
+                }
+            }
+            node = make_repeat(std::move(node), spacing, counts);
+        }
+        if (const auto axes = r.text("mirror")) {
+            std::array<bool, 3> mirrored{};
+            for (const char c : *axes) {
+                if (c < 'x' || c > 'z') {
+                    throw InputError(
+                        path + "mirror",
+                        "expected axes among x, y, z such as \"xz\", found \"" + *axes + "\"");
+                }
+                mirrored[static_cast<std::size_t>(c - 'x')] = true;
+            }
+            node = make_mirror_axes(std::move(node), mirrored);
+        }
+        if (const toml::table* plane = r.subtable("mirror_plane")) {
+            TableReader rp(*plane, path + "mirror_plane.");
+            const Vec3 normal = rp.vector("normal", {1, 0, 0});
+            const Vec3 point = rp.vector("point", Vec3(0.0));
+            rp.finish();
+            node = make_mirror_plane(std::move(node), normal, point);
+        }
+        glm::dmat3 rotation(1.0);
+        bool placed = false;
+        if (r.find("rotate_axis") != nullptr || r.find("rotate_degrees") != nullptr) {
+            rotation =
+                rotation_about(r.vector("rotate_axis", {0, 1, 0}), r.number("rotate_degrees", 0.0));
+            placed = true;
+        }
+        if (r.find("euler") != nullptr) {
+            rotation = rotation_euler(r.vector("euler", Vec3(0.0))) * rotation;
+            placed = true;
+        }
+        const double scale = r.number("scale", 1.0, true);
+        const Vec3 translation = r.vector("translate", Vec3(0.0));
+        if (placed || scale != 1.0 || translation != Vec3(0.0)) {
+            node = make_placement(std::move(node), rotation, scale, translation);
+        }
+        return node;
+    }
+
+    static MaterialPtr default_material() {
+        static const MaterialPtr material = [] {
+            auto m = std::make_shared<NodeMaterial>();
+            m->look.color = m->look.inside = {0.75, 0.75, 0.78};
+            return m;
+        }();
+        return material;
+    }
+
+    std::map<std::string, MaterialPtr> materials_;
+    const SurfaceCompiler& compile_;
+    TraceMethod method_;
+};
+
+}  // namespace
+
+std::vector<NodePtr> read_objects(const toml::array& objects, const toml::table* materials,
+                                  const SurfaceCompiler& compile, TraceMethod method) {
+    Reader reader(materials, compile, method);
+    std::vector<NodePtr> nodes;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        nodes.push_back(
+            reader.read(*objects[i].as_table(), "object[" + std::to_string(i + 1) + "].", nullptr));
+    }
+    return nodes;
+}
+
+}  // namespace locus::render::sdf

@@ -1,0 +1,20 @@
+// Reading the SDF scene tree of a scene file ([[object]] tables and [materials.NAME]), used only
+// by render/scene_file.cpp; the format is documented in docs/sdf-scenes.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "render/scene.h"
+#include "render/sdf/node.h"
+
+namespace locus::render::sdf {
+
+// Every error is an InputError naming the position and the key path, such as
+// "line 12, column 1: object[2].children[1].type: unknown node type \"sphre\" (expected ...)".
+std::vector<NodePtr> read_objects(const toml::array& objects, const toml::table* materials,
+                                  const SurfaceCompiler& compile, TraceMethod method);
+
+}  // namespace locus::render::sdf

@@ -1,0 +1,240 @@
+#include "render/sdf/scene_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace locus::render::sdf {
+
+namespace {
+
+// Sphere-traced rays give up after this many evaluations of one item, or of all items without
+// the triangle-inequality speed-up (grazing rays creep along a surface).
+constexpr int kMaxSteps = 512;
+
+void flatten(const NodePtr& node, std::vector<NodePtr>& out) {
+    if (const std::vector<NodePtr>* children = node->union_children()) {
+        for (const NodePtr& child : *children) {
+            flatten(child, out);
+        }
+    } else {
+        out.push_back(node);
+    }
+}
+
+// Per-item marching state along one ray.
+struct Progress {
+    double safe_until;  // the item is not hit before this t
+    double exit;        // nor after this t (leaving its bounding box)
+    double last_t = -INFINITY;
+    double last_value = 0.0;
+    int steps = 0;
+    bool active = true;
+};
+
+}  // namespace
+
+double SceneTracer::bounded_value(const Item& item, const Vec3& p) const {
+    // Outside its bounding box an item is at least as far as the box: a second lower bound
+    // of the distance, much better than value/L for fields that flatten out far away (soft
+    // objects, a large Lipschitz constant).
+    const double v = item.node->value(p) * item.inverse_lipschitz;
+    return v > 0.0 ? std::max(v, item.node->bounds().distance(p)) : v;
+}
+
+SceneTracer::SceneTracer(const std::vector<NodePtr>& objects, double scale, SpeedUps speed_ups)
+    : scale_(scale), speed_ups_(speed_ups) {
+    std::vector<NodePtr> flat;
+    for (const NodePtr& object : objects) {
+        flatten(object, flat);
+    }
+    for (const NodePtr& node : flat) {
+        const int index = static_cast<int>(items_.size());
+        items_.push_back({node, 1.0 / node->lipschitz(), node->traces_exactly(),
+                          node->is_convex_exact(), node->primitive_count()});
+        (node->traces_exactly() ? exact_ : marched_).push_back(index);
+    }
+}
+
+SceneHit SceneTracer::first_hit(const Ray& ray, Interval interval, double footprint,
+                                TraceCounters& counters) const {
+    SceneHit best;
+    best.t = interval.hi;
+    for (int index : exact_) {
+        const RootResult root =
+            items_[static_cast<std::size_t>(index)].node->first_hit(ray, {interval.lo, best.t});
+        counters.root_work += root.work;
+        if (root.status == RootStatus::hit && root.t <= best.t) {
+            best = {root.t, index};
+        }
+    }
+    if (marched_.empty()) {
+        return best;
+    }
+    const double floor_epsilon = 1e-6 * scale_;
+    std::vector<Progress> progress;
+    progress.reserve(marched_.size());
+    for (int index : marched_) {
+        const Item& item = items_[static_cast<std::size_t>(index)];
+        Interval span{interval.lo, best.t};
+        if (speed_ups_.bounding_volumes) {
+            span = item.node->bounds().clip(ray, span);
+        }
+        Progress p{span.lo, span.hi};
+        p.active = !span.is_empty();
+        progress.push_back(p);
+    }
+    const bool lazy = speed_ups_.triangle_inequality;
+    for (;;) {
+        // The item that limits the step.
+        double t = INFINITY;
+        std::size_t next = progress.size();
+        for (std::size_t i = 0; i < progress.size(); ++i) {
+            if (progress[i].active && progress[i].safe_until < t) {
+                t = progress[i].safe_until;
+                next = i;
+            }
+        }
+        if (next == progress.size() || t >= best.t) {
+            break;
+        }
+        const Vec3 point = ray.at(t);
+        const double epsilon = std::max(floor_epsilon, 0.5 * footprint * t);
+        for (std::size_t i = 0; i < progress.size(); ++i) {
+            Progress& p = progress[i];
+            // Lazily, only the limiting item; otherwise every item whose bounding box the
+            // ray has entered.
+            const bool due = lazy ? i == next : p.last_t > -INFINITY || p.safe_until <= t;
+            if (!p.active || !due) {
+                continue;
+            }
+            const Item& item = items_[static_cast<std::size_t>(marched_[i])];
+            const double v = bounded_value(item, point);
+            counters.evaluations += item.primitives;
+            const bool crossed = p.last_t > -INFINITY && (v < 0.0) != (p.last_value < 0.0);
+            if (std::abs(v) < floor_epsilon || crossed) {
+                double hit_t = t;
+                if (crossed) {
+                    // An estimate stepped over the surface: bisect back to the sign change.
+                    double lo = p.last_t, hi = t;
+                    const bool lo_negative = p.last_value < 0.0;
+                    for (int k = 0; k < 60 && hi - lo > 1e-3 * epsilon; ++k) {
+                        const double mid = 0.5 * (lo + hi);
+                        const double vm = item.node->value(ray.at(mid)) * item.inverse_lipschitz;
+                        counters.evaluations += item.primitives;
+                        ((vm < 0.0) == lo_negative ? lo : hi) = mid;
+                    }
+                    hit_t = hi;
+                }
+                if (hit_t < best.t) {
+                    best = {hit_t, marched_[i]};
+                }
+                p.active = false;
+                continue;
+            }
+            // Within the pixel's tolerance of a surface, the march goes on in steps of half
+            // the tolerance until the sign changes (a hit, bisected back) or the value grows
+            // again (a near miss): silhouettes stay where the surface is instead of growing
+            // by the tolerance times L. A sheet thinner than half a tolerance can be missed.
+            double advance = std::max(std::abs(v), 0.5 * epsilon);
+            if (speed_ups_.convexity && item.convex && v > 0.0) {
+                const Vec3 g = item.node->gradient(point, epsilon);
+                const double approach = -glm::dot(ray.direction, g) / glm::length(g);
+                if (!(approach > 0.0)) {
+                    p.active = false;  // moving away from a supporting plane of a convex solid
+                    continue;
+                }
+                advance = std::max(advance, v / approach);
+            }
+            p.last_t = t;
+            p.last_value = v;
+            p.safe_until = t + advance;
+            if (++p.steps > kMaxSteps) {
+                // Creeping along a surface: call it a hit if it is within the tolerance.
+                if (std::abs(v) < epsilon && t < best.t) {
+                    best = {t, marched_[i]};
+                } else {
+                    ++counters.undecided;
+                }
+                p.active = false;
+            } else if (p.safe_until > p.exit) {
+                p.active = false;
+            }
+        }
+    }
+    if (best.item < 0 || best.t >= interval.hi) {
+        return {};
+    }
+    return best;
+}
+
+double SceneTracer::transmittance(const Ray& ray, double t_max, double penumbra,
+                                  TraceCounters& counters) const {
+    for (int index : exact_) {
+        const RootResult root =
+            items_[static_cast<std::size_t>(index)].node->first_hit(ray, {0.0, t_max});
+        counters.root_work += root.work;
+        if (root.status == RootStatus::hit) {
+            return 0.0;
+        }
+    }
+    if (marched_.empty()) {
+        return 1.0;
+    }
+    const double epsilon = 1e-5 * scale_;
+    double light = 1.0;
+    double previous = 1e20;
+    double t = 0.0;
+    for (int step = 0; step < kMaxSteps && t < t_max; ++step) {
+        const Vec3 point = ray.at(t);
+        // The closest item; a bounding box farther than the closest value found so far
+        // cannot hold a closer one (Hart's bounding volumes for unions).
+        double h = INFINITY;
+        for (int index : marched_) {
+            const Item& item = items_[static_cast<std::size_t>(index)];
+            if (item.node->bounds().distance(point) >= h) {
+                continue;
+            }
+            h = std::min(h, std::abs(bounded_value(item, point)));
+            counters.evaluations += item.primitives;
+        }
+        if (h < epsilon) {
+            return 0.0;
+        }
+        if (penumbra > 0.0 && step > 0) {
+            // Quilez's improved penumbra: the closest approach between this sample and the
+            // previous one, not the sample itself.
+            const double y = h * h / (2.0 * previous);
+            const double d = std::sqrt(std::max(0.0, h * h - y * y));
+            light = std::min(light, penumbra * d / std::max(1e-12, t - y));
+            if (light < 1e-3) {
+                return 0.0;
+            }
+        }
+        previous = h;
+        t += h;
+    }
+    light = std::clamp(light, 0.0, 1.0);
+    return light * light * (3.0 - 2.0 * light);
+}
+
+double SceneTracer::value(const Vec3& p, TraceCounters& counters) const {
+    double best = INFINITY;
+    for (const Item& item : items_) {
+        if (item.node->bounds().distance(p) >= best) {
+            continue;
+        }
+        best = std::min(best, bounded_value(item, p));
+        counters.evaluations += item.primitives;
+    }
+    return best;
+}
+
+Vec3 SceneTracer::normal(int item, const Vec3& p, double h) const {
+    return items_[static_cast<std::size_t>(item)].node->gradient(p, h);
+}
+
+Look SceneTracer::look(int item, const Vec3& p) const {
+    return items_[static_cast<std::size_t>(item)].node->look(p);
+}
+
+}  // namespace locus::render::sdf

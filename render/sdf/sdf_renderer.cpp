@@ -1,0 +1,238 @@
+#include "render/sdf/sdf_renderer.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/sdf/algebraic_leaf.h"
+
+namespace locus::render {
+
+std::vector<sdf::NodePtr> scene_items(const Scene& scene,
+                                      std::span<const algebra::CompiledPolynomial> surfaces) {
+    std::vector<sdf::NodePtr> items = scene.objects;
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        items.push_back(sdf::make_algebraic(
+            std::make_shared<const algebra::CompiledPolynomial>(surfaces[i]),
+            scene.surfaces[i].clip, scene.surfaces[i].material, scene.options.method));
+    }
+    return items;
+}
+
+namespace {
+
+// The size of the scene's finite part: tolerances and the far distance scale with it.
+double finite_scale(const std::vector<sdf::NodePtr>& items, Vec3& center) {
+    sdf::Bounds box{Vec3(INFINITY), Vec3(-INFINITY)};
+    for (const sdf::NodePtr& item : items) {
+        if (item->bounds().is_finite()) {
+            box = box.united(item->bounds());
+        }
+    }
+    if (!(box.min.x <= box.max.x)) {
+        center = Vec3(0.0);
+        return 1.0;
+    }
+    center = 0.5 * (box.min + box.max);
+    return std::max(1e-3, 0.5 * glm::length(box.max - box.min));
+}
+
+class SdfShader {
+  public:
+    SdfShader(const sdf::SceneTracer& tracer, std::span<const Light> lights,
+              const RenderOptions& options, double far)
+        : tracer_(tracer), lights_(lights), options_(options), far_(far) {}
+
+    // Colour and unit normal (towards the viewer) of the hit of a unit-direction ray.
+    Vec3 shade(const Ray& ray, const sdf::SceneHit& hit, double epsilon, Vec3& normal,
+               sdf::TraceCounters& counters) const {
+        const Vec3 point = ray.at(hit.t);
+        const Vec3 view = -ray.direction;
+        const sdf::Look look = tracer_.look(hit.item, point);
+        Vec3 n = tracer_.normal(hit.item, point, std::max(epsilon, 1e-7 * tracer_.scale()));
+        const double length = glm::length(n);
+        bool outside = true;
+        if (length > 0.0 && std::isfinite(length)) {
+            n /= length;
+            if (glm::dot(n, view) < 0.0) {
+                n = -n;
+                outside = false;
+            }
+        } else {
+            n = view;
+        }
+        normal = n;
+        const Vec3 base = outside ? look.color : look.inside;
+        double ambient = look.ambient;
+        if (options_.ambient_occlusion) {
+            ambient *= occlusion(point, n, counters);
+        }
+        Vec3 color = ambient * base;
+        const Vec3 origin = point + (4.0 * epsilon + 1e-6 * tracer_.scale()) * n;
+        for (const Light& light : lights_) {
+            Vec3 to_light = light.direction;
+            double distance = far_;
+            if (light.kind == Light::Kind::point) {
+                to_light = light.position - point;
+                distance = glm::length(to_light);
+                to_light /= distance;
+            }
+            const double cosine = glm::dot(n, to_light);
+            if (cosine <= 0.0) {
+                continue;
+            }
+            double visible = 1.0;
+            if (options_.shadows) {
+                double penumbra = 0.0;
+                if (light.radius > 0.0) {
+                    penumbra = light.kind == Light::Kind::point
+                                   ? distance / light.radius
+                                   : 1.0 / std::tan(std::min(light.radius, 1.5));
+                }
+                visible = tracer_.transmittance({origin, to_light}, distance, penumbra, counters);
+                if (visible <= 0.0) {
+                    continue;
+                }
+            }
+            const Vec3 half = glm::normalize(to_light + view);
+            const double highlight = std::pow(std::max(0.0, glm::dot(n, half)), look.shininess);
+            color += (visible * light.intensity) * light.color *
+                     (look.diffuse * cosine * base + look.specular * highlight * Vec3(1.0));
+        }
+        return color;
+    }
+
+  private:
+    // Five samples of the field along the normal (Quilez): where the field is smaller than
+    // the distance from the surface, something is near and the point is occluded.
+    double occlusion(const Vec3& point, const Vec3& n, sdf::TraceCounters& counters) const {
+        const double reach = 0.15 * tracer_.scale();
+        double occluded = 0.0, weight = 1.0;
+        for (int i = 0; i < 5; ++i) {
+            const double h = reach * (0.05 + 0.95 * i / 4.0);
+            const double d = tracer_.value(point + h * n, counters);
+            occluded += (h - std::max(d, 0.0)) / reach * weight;
+            weight *= 0.85;
+        }
+        return std::clamp(1.0 - 1.2 * occluded, 0.0, 1.0);
+    }
+
+    const sdf::SceneTracer& tracer_;
+    std::span<const Light> lights_;
+    RenderOptions options_;
+    double far_;
+};
+
+}  // namespace
+
+RenderedImage render_sdf_scene(const Scene& scene,
+                               std::span<const algebra::CompiledPolynomial> surfaces,
+                               const ExecutionSettings& execution, RenderStats* stats,
+                               sdf::SpeedUps speed_ups) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<sdf::NodePtr> items = scene_items(scene, surfaces);
+    Vec3 center;
+    const double scale = finite_scale(items, center);
+    const Camera camera(scene.camera.value_or(default_camera(scene)), scene.width, scene.height);
+    const std::vector<Light> lights = scene.lights.empty() ? default_lights() : scene.lights;
+    const double far = 200.0 * (scale + glm::length(camera.eye() - center));
+    const sdf::SceneTracer tracer(items, scale, speed_ups);
+    const SdfShader shader(tracer, lights, scene.options, far);
+    const int k = scene.options.samples;
+    // The width of a pixel (of a sample) per unit distance along the view direction.
+    const double footprint = glm::length(camera.per_row()) /
+                             glm::length(camera.direction(0.5 * scene.width, 0.5 * scene.height)) /
+                             k;
+
+    RenderedImage image;
+    image.width = scene.width;
+    image.height = scene.height;
+    const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
+    image.color.assign(3 * pixels, 0.0f);
+    image.depth.assign(pixels, INFINITY);
+    image.normal.assign(3 * pixels, 0.0f);
+    image.work.assign(pixels, 0.0f);
+    std::atomic<long> hits{0}, undecided{0}, primary_work{0};
+    std::atomic<int> rows_done{0};
+    std::mutex progress_mutex;
+
+    auto render_row = [&](int y) {
+        long row_hits = 0, row_work = 0;
+        sdf::TraceCounters row_counters;
+        for (int x = 0; x < scene.width; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y) * scene.width + x;
+            Vec3 sum(0.0);
+            double nearest = INFINITY;
+            Vec3 nearest_normal(0.0);
+            long pixel_work = 0;
+            for (int sy = 0; sy < k; ++sy) {
+                for (int sx = 0; sx < k; ++sx) {
+                    const Vec3 d = camera.direction(x + (sx + 0.5) / k, y + (sy + 0.5) / k);
+                    const Ray ray{camera.eye(), glm::normalize(d)};
+                    sdf::TraceCounters counters;
+                    const sdf::SceneHit hit =
+                        tracer.first_hit(ray, {0.0, far}, footprint, counters);
+                    row_work += counters.evaluations + counters.root_work;
+                    row_counters.undecided += counters.undecided;
+                    if (!hit.found()) {
+                        sum += scene.background;
+                    } else {
+                        ++row_hits;
+                        Vec3 normal;
+                        sum += shader.shade(ray, hit, 0.5 * footprint * hit.t, normal, counters);
+                        if (hit.t < nearest) {
+                            nearest = hit.t;
+                            nearest_normal = normal;
+                        }
+                    }
+                    pixel_work += counters.evaluations + counters.root_work;
+                }
+            }
+            const double weight = 1.0 / (k * k);
+            for (int c = 0; c < 3; ++c) {
+                image.color[3 * p + c] = static_cast<float>(sum[c] * weight);
+                image.normal[3 * p + c] = static_cast<float>(nearest_normal[c]);
+            }
+            image.depth[p] = static_cast<float>(nearest);
+            image.work[p] = static_cast<float>(pixel_work);
+        }
+        hits += row_hits;
+        undecided += row_counters.undecided;
+        primary_work += row_work;
+        const int done = ++rows_done;
+        if (execution.progress) {
+            std::unique_lock lock(progress_mutex, std::try_to_lock);
+            if (lock.owns_lock()) {
+                execution.progress(static_cast<double>(done) / scene.height);
+            }
+        }
+    };
+
+    const int threads =
+        execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, scene.height, 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              for (int y = range.begin(); y < range.end(); ++y) {
+                                  render_row(y);
+                              }
+                          });
+    });
+    if (stats != nullptr) {
+        stats->seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats->primary_rays = static_cast<long>(pixels) * k * k;
+        stats->hits = hits;
+        stats->unknown = undecided;
+        stats->primary_work = primary_work;
+    }
+    return image;
+}
+
+}  // namespace locus::render
