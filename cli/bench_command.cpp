@@ -24,6 +24,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/render_bench.h"
+#include "cli/sdf_bench.h"
 #include "implicit/implicitize.h"
 
 #ifndef LOCUS_SOURCE_DIR
@@ -282,9 +283,19 @@ int run_bench(const BenchArgs& args) {
         render_args.surf = args.surf;
         return run_render_bench(render_args);
     }
+    if (args.suite == "sdf") {
+        SdfBenchArgs sdf_args;
+        sdf_args.data_dir = args.data_dir;
+        sdf_args.cases = args.cases;
+        sdf_args.size = args.size;
+        sdf_args.threads = args.threads;
+        sdf_args.min_seconds = args.min_seconds;
+        sdf_args.csv = args.csv;
+        return run_sdf_bench(sdf_args);
+    }
     if (args.suite != "groebner") {
         throw CommandFailure(exit_input, "bench: unknown suite '" + args.suite +
-                                             "' (available: groebner, implicit, render)");
+                                             "' (available: groebner, implicit, render, sdf)");
     }
     const std::vector<std::string> cases = suite_cases(args, args.data_dir);
     const bool with_singular = args.singular != "off" && on_path(args.singular);
@@ -352,8 +363,10 @@ int run_bench(const BenchArgs& args) {
 
 void add_bench_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* cmd = app.add_subcommand("bench", "Benchmark suites (groebner, implicit, render)");
-    cmd->add_option("suite", args->suite, "the suite: groebner | implicit | render")->required();
+    CLI::App* cmd =
+        app.add_subcommand("bench", "Benchmark suites (groebner, implicit, render, sdf)");
+    cmd->add_option("suite", args->suite, "the suite: groebner | implicit | render | sdf")
+        ->required();
     cmd->add_flag("--csv", args->csv, "write CSV rows instead of a table");
     cmd->add_option("--data", args->data_dir, "folder with SUITE.txt and the .ideal files");
     cmd->add_option("--cases", args->cases, "run only these cases")->delimiter(',');

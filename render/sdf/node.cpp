@@ -79,10 +79,9 @@ Look NodeMaterial::at(const Vec3& p) const {
     if (!checker) {
         return look;
     }
-    // Cells are offset by half a cell so that surfaces on the planes x, y, z = 0 (a floor at
-    // y = 0) lie in the middle of a layer of cells, not on a boundary where rounding would
-    // flip the colour from pixel to pixel.
-    const Vec3 cell = glm::floor(p / checker_size + 0.5);
+    // The shader asks just inside the surface, so a floor lying on a cell boundary (y = 0)
+    // gets one layer of cells, not a rounding-dependent mix of two.
+    const Vec3 cell = glm::floor(p / checker_size);
     const auto parity = static_cast<long long>(cell.x + cell.y + cell.z);
     if (parity % 2 == 0) {
         return look;

@@ -73,8 +73,9 @@ class SceneTracer {
     double bounded_value(const Item& item, const Vec3& p) const;
 
     std::vector<Item> items_;
-    std::vector<int> marched_;  // indices of sphere-traced items
-    std::vector<int> exact_;    // indices of exactly traced items
+    std::vector<int> marched_;                            // indices of sphere-traced items
+    std::vector<int> exact_;                              // indices of exactly traced items
+    Bounds finite_box_{Vec3(INFINITY), Vec3(-INFINITY)};  // of all bounded items
     double scale_;
     SpeedUps speed_ups_;
 };

@@ -53,7 +53,6 @@ class SdfShader {
                sdf::TraceCounters& counters) const {
         const Vec3 point = ray.at(hit.t);
         const Vec3 view = -ray.direction;
-        const sdf::Look look = tracer_.look(hit.item, point);
         Vec3 n = tracer_.normal(hit.item, point, std::max(epsilon, 1e-7 * tracer_.scale()));
         const double length = glm::length(n);
         bool outside = true;
@@ -67,6 +66,11 @@ class SdfShader {
             n = view;
         }
         normal = n;
+        // The look just inside the surface (against the outward normal), where patterns such
+        // as a checker are decided the same way for every pixel of a flat floor.
+        const Vec3 outward = outside ? n : -n;
+        const sdf::Look look =
+            tracer_.look(hit.item, point - (epsilon + 1e-6 * tracer_.scale()) * outward);
         const Vec3 base = outside ? look.color : look.inside;
         double ambient = look.ambient;
         if (options_.ambient_occlusion) {
