@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <queue>
 
 namespace locus::render::sdf {
 
@@ -86,81 +88,107 @@ SceneHit SceneTracer::first_hit(const Ray& ray, Interval interval, double footpr
         p.active = !span.is_empty();
         progress.push_back(p);
     }
-    const bool lazy = speed_ups_.triangle_inequality;
-    for (;;) {
-        // The item that limits the step.
-        double t = INFINITY;
-        std::size_t next = progress.size();
-        for (std::size_t i = 0; i < progress.size(); ++i) {
-            if (progress[i].active && progress[i].safe_until < t) {
-                t = progress[i].safe_until;
-                next = i;
-            }
-        }
-        if (next == progress.size() || t >= best.t) {
-            break;
-        }
+    // Evaluates item i at t: a hit (the value within the floor tolerance, or a sign change
+    // bisected back), or a new safe_until.
+    auto advance_item = [&](std::size_t i, double t) {
+        Progress& p = progress[i];
         const Vec3 point = ray.at(t);
         const double epsilon = std::max(floor_epsilon, 0.5 * footprint * t);
+        const Item& item = items_[static_cast<std::size_t>(marched_[i])];
+        const double v = bounded_value(item, point);
+        counters.evaluations += item.primitives;
+        const bool crossed = p.last_t > -INFINITY && (v < 0.0) != (p.last_value < 0.0);
+        if (std::abs(v) < floor_epsilon || crossed) {
+            double hit_t = t;
+            if (crossed) {
+                // An estimate stepped over the surface: bisect back to the sign change.
+                double lo = p.last_t, hi = t;
+                const bool lo_negative = p.last_value < 0.0;
+                for (int k = 0; k < 60 && hi - lo > 1e-3 * epsilon; ++k) {
+                    const double mid = 0.5 * (lo + hi);
+                    const double vm = item.node->value(ray.at(mid)) * item.inverse_lipschitz;
+                    counters.evaluations += item.primitives;
+                    ((vm < 0.0) == lo_negative ? lo : hi) = mid;
+                }
+                hit_t = hi;
+            }
+            if (hit_t < best.t) {
+                best = {hit_t, marched_[i]};
+            }
+            p.active = false;
+            return;
+        }
+        // Within the pixel's tolerance of a surface, the march goes on in steps of half
+        // the tolerance until the sign changes (a hit, bisected back) or the value grows
+        // again (a near miss): silhouettes stay where the surface is instead of growing
+        // by the tolerance times L. A sheet thinner than half a tolerance can be missed.
+        double advance = std::max(std::abs(v), 0.5 * epsilon);
+        if (speed_ups_.convexity && item.convex && v > 0.0) {
+            const Vec3 g = item.node->gradient(point, epsilon);
+            const double approach = -glm::dot(ray.direction, g) / glm::length(g);
+            if (!(approach > 0.0)) {
+                p.active = false;  // moving away from a supporting plane of a convex solid
+                return;
+            }
+            advance = std::max(advance, v / approach);
+        }
+        p.last_t = t;
+        p.last_value = v;
+        p.safe_until = t + advance;
+        if (++p.steps > kMaxSteps) {
+            // Creeping along a surface: call it a hit if it is within the tolerance.
+            if (std::abs(v) < epsilon && t < best.t) {
+                best = {t, marched_[i]};
+            } else {
+                ++counters.undecided;
+            }
+            p.active = false;
+        } else if (p.safe_until > p.exit) {
+            p.active = false;
+        }
+    };
+    if (speed_ups_.triangle_inequality) {
+        // Lazily: only the item that limits the step is evaluated, taken from a heap of the
+        // items' safe_until (entries are dropped when stale).
+        using Entry = std::pair<double, std::size_t>;
+        std::priority_queue<Entry, std::vector<Entry>, std::greater<>> due;
         for (std::size_t i = 0; i < progress.size(); ++i) {
+            if (progress[i].active) {
+                due.emplace(progress[i].safe_until, i);
+            }
+        }
+        while (!due.empty()) {
+            const auto [t, i] = due.top();
+            due.pop();
             Progress& p = progress[i];
-            // Lazily, only the limiting item; otherwise every item whose bounding box the
-            // ray has entered.
-            const bool due = lazy ? i == next : p.last_t > -INFINITY || p.safe_until <= t;
-            if (!p.active || !due) {
+            if (!p.active || t != p.safe_until) {
                 continue;
             }
-            const Item& item = items_[static_cast<std::size_t>(marched_[i])];
-            const double v = bounded_value(item, point);
-            counters.evaluations += item.primitives;
-            const bool crossed = p.last_t > -INFINITY && (v < 0.0) != (p.last_value < 0.0);
-            if (std::abs(v) < floor_epsilon || crossed) {
-                double hit_t = t;
-                if (crossed) {
-                    // An estimate stepped over the surface: bisect back to the sign change.
-                    double lo = p.last_t, hi = t;
-                    const bool lo_negative = p.last_value < 0.0;
-                    for (int k = 0; k < 60 && hi - lo > 1e-3 * epsilon; ++k) {
-                        const double mid = 0.5 * (lo + hi);
-                        const double vm = item.node->value(ray.at(mid)) * item.inverse_lipschitz;
-                        counters.evaluations += item.primitives;
-                        ((vm < 0.0) == lo_negative ? lo : hi) = mid;
-                    }
-                    hit_t = hi;
-                }
-                if (hit_t < best.t) {
-                    best = {hit_t, marched_[i]};
-                }
-                p.active = false;
-                continue;
+            if (t >= best.t) {
+                break;
             }
-            // Within the pixel's tolerance of a surface, the march goes on in steps of half
-            // the tolerance until the sign changes (a hit, bisected back) or the value grows
-            // again (a near miss): silhouettes stay where the surface is instead of growing
-            // by the tolerance times L. A sheet thinner than half a tolerance can be missed.
-            double advance = std::max(std::abs(v), 0.5 * epsilon);
-            if (speed_ups_.convexity && item.convex && v > 0.0) {
-                const Vec3 g = item.node->gradient(point, epsilon);
-                const double approach = -glm::dot(ray.direction, g) / glm::length(g);
-                if (!(approach > 0.0)) {
-                    p.active = false;  // moving away from a supporting plane of a convex solid
-                    continue;
-                }
-                advance = std::max(advance, v / approach);
+            advance_item(i, t);
+            if (p.active) {
+                due.emplace(p.safe_until, i);
             }
-            p.last_t = t;
-            p.last_value = v;
-            p.safe_until = t + advance;
-            if (++p.steps > kMaxSteps) {
-                // Creeping along a surface: call it a hit if it is within the tolerance.
-                if (std::abs(v) < epsilon && t < best.t) {
-                    best = {t, marched_[i]};
-                } else {
-                    ++counters.undecided;
+        }
+    } else {
+        // Every item whose bounding box the ray has entered, at every step.
+        for (;;) {
+            double t = INFINITY;
+            for (const Progress& p : progress) {
+                if (p.active && p.safe_until < t) {
+                    t = p.safe_until;
                 }
-                p.active = false;
-            } else if (p.safe_until > p.exit) {
-                p.active = false;
+            }
+            if (!(t < best.t)) {
+                break;
+            }
+            for (std::size_t i = 0; i < progress.size(); ++i) {
+                const Progress& p = progress[i];
+                if (p.active && (p.last_t > -INFINITY || p.safe_until <= t)) {
+                    advance_item(i, t);
+                }
             }
         }
     }
