@@ -105,10 +105,18 @@ expect "render: unknown scene key" 2 "bad.toml: line 3, column 1: surface[1].rad
 printf '[image]\nwidth = 24\nheight = 16\n[[surface]]\nequation = "x^2+y^2+z^2-1"\n[render]\nmethod = "bernstein"\n' > "$tmp/good.toml"
 expect "render a scene file" 0 "rendered 24x16, 1×1 samples, method bernstein" -- \
     "$locus" render "$tmp/good.toml" -o "$tmp/scene.png"
+printf '[[object]]\ntype = "smooth_union"\nk = 0.3\n[[object.children]]\ntype = "sphere"\n[[object.children]]\ntype = "algebraic"\nparam = "bench/data/implicit/steiner_roman.param"\nscale = 2\n' > "$tmp/tree.toml"
+expect "render an SDF scene with an implicitized leaf" 0 "primitive evaluations per primary ray" -- \
+    "$locus" render "$tmp/tree.toml" -o "$tmp/tree.png" --size 24x16
+printf '[[object]]\ntype = "union"\n[[object.children]]\ntype = "sphre"\n' > "$tmp/badtree.toml"
+expect "render: unknown node type names the node" 2 "badtree.toml: line 4, column 8: object[1].children[1].type: expected a node type" -- \
+    "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
+expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
+    "$locus" bench sdf --size 16 --min-seconds 0 --csv
 expect "trace prints hits and misses" 0 "" -- bash -c \
     "printf '0 0 5 0 0 -1\n3 3 3 1 0 0\n' | \"$locus\" trace 'x^2+y^2+z^2-1' --method exact | diff - <(printf '4\nmiss\n')"
 expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a decimal number" -- \
     bash -c "printf '0 0 5 0 0 -1\n0 0 5 x 0 -1\n' | \"$locus\" trace 'x^2+y^2+z^2-1'"
 
-echo "$((45 - failures)) passed, $failures failed"
+echo "$((48 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]
