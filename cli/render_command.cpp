@@ -129,9 +129,16 @@ render::Scene build_scene(const RenderArgs& args) {
     render::Scene scene;
     if (is_scene_file) {
         try {
-            scene = render::parse_scene(read_input(args.input), scene_surface_compiler());
+            std::optional<render::TraceMethod> method;
+            if (!args.method.empty()) {
+                method = render::parse_trace_method(args.method);
+            }
+            scene = render::parse_scene(read_input(args.input), scene_surface_compiler(), method);
         } catch (const Error& e) {
             throw CommandFailure(exit_input, args.input + ": " + e.what());
+        } catch (const CommandFailure& e) {
+            // An algebraic leaf that failed to implicitize or compile.
+            throw CommandFailure(e.code(), args.input + ": " + e.what());
         }
     } else {
         render::Surface surface;

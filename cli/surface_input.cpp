@@ -75,8 +75,13 @@ render::SurfaceCompiler scene_surface_compiler() {
         if (source.param_file.empty()) {
             return compile_equation(source.key + ".equation", source.equation, "rendering");
         }
-        return compile_equation(source.key + ".param", implicit_equation_of(source.param_file),
-                                "rendering");
+        std::string equation;
+        try {
+            equation = implicit_equation_of(source.param_file);
+        } catch (const CommandFailure& e) {
+            throw CommandFailure(e.code(), source.key + ".param: " + e.what());
+        }
+        return compile_equation(source.key + ".param", equation, "rendering");
     };
 }
 

@@ -88,7 +88,8 @@ Light read_light(const toml::table& table, const std::string& path) {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text, const SurfaceCompiler& compile) {
+Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
+                  std::optional<TraceMethod> method) {
     toml::table root;
     try {
         root = toml::parse(text);
@@ -129,8 +130,8 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile) {
     }
     if (const toml::table* options = r.subtable("render")) {
         TableReader ro(*options, "render.");
-        if (const auto method = ro.text("method")) {
-            scene.options.method = parse_trace_method(*method);
+        if (const auto name = ro.text("method")) {
+            scene.options.method = parse_trace_method(*name);
         }
         scene.options.samples = ro.count("samples", scene.options.samples, 1, 16);
         scene.options.shadows = ro.flag("shadows", scene.options.shadows);
@@ -138,6 +139,9 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile) {
             ro.flag("ambient_occlusion", scene.options.ambient_occlusion);
         scene.options.threads = ro.count("threads", scene.options.threads, 0, 1024);
         ro.finish();
+    }
+    if (method) {
+        scene.options.method = *method;
     }
     const toml::table* materials = r.subtable("materials");
     if (const toml::array* objects = r.array_of_tables("object")) {

@@ -28,6 +28,9 @@
 namespace locus::render {
 
 // `compile` turns the algebraic leaves of [[object]] trees into compiled polynomials.
-Scene parse_scene(std::string_view text, const SurfaceCompiler& compile = {});
+// `method`, when given, replaces [render] method before the algebraic leaves are built (the
+// command line's --method).
+Scene parse_scene(std::string_view text, const SurfaceCompiler& compile = {},
+                  std::optional<TraceMethod> method = std::nullopt);
 
 }  // namespace locus::render

@@ -21,8 +21,11 @@ namespace {
 class AlgebraicLeaf final : public Node {
   public:
     AlgebraicLeaf(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
-                  const Material& material, TraceMethod method)
-        : f_(std::move(f)), clip_(clip), tracer_(*f_, method, bounding_sphere(clip).radius) {
+                  const Material& material, TraceMethod method, MaterialPtr pattern)
+        : f_(std::move(f)),
+          pattern_(std::move(pattern)),
+          clip_(clip),
+          tracer_(*f_, method, bounding_sphere(clip).radius) {
         kind_ = DistanceKind::estimate;
         const ClipSphere sphere = bounding_sphere(clip);
         if (const auto* box = std::get_if<ClipBox>(&clip)) {
@@ -46,7 +49,7 @@ class AlgebraicLeaf final : public Node {
             length > 0.0 ? vg.value / length : std::copysign(INFINITY, vg.value);
         return std::max(clip_distance(clip_, p), estimate);
     }
-    Look look(const Vec3&) const override { return look_; }
+    Look look(const Vec3& p) const override { return pattern_ ? pattern_->at(p) : look_; }
     Vec3 gradient(const Vec3& p, double) const override {
         return to_vec(f_->value_gradient(to_point(p)).gradient);
     }
@@ -63,6 +66,7 @@ class AlgebraicLeaf final : public Node {
 
   private:
     std::shared_ptr<const algebra::CompiledPolynomial> f_;
+    MaterialPtr pattern_;
     ClipRegion clip_;
     SurfaceTracer tracer_;
     Look look_;
@@ -71,8 +75,9 @@ class AlgebraicLeaf final : public Node {
 }  // namespace
 
 NodePtr make_algebraic(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
-                       const Material& material, TraceMethod method) {
-    return std::make_shared<AlgebraicLeaf>(std::move(f), clip, material, method);
+                       const Material& material, TraceMethod method, MaterialPtr pattern) {
+    return std::make_shared<AlgebraicLeaf>(std::move(f), clip, material, method,
+                                           std::move(pattern));
 }
 
 }  // namespace locus::render::sdf

@@ -17,8 +17,9 @@
 
 namespace locus::render::sdf {
 
+// `pattern`, when given, supplies the look at each point (a checker), its inside colour included.
 NodePtr make_algebraic(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
-                       const Material& material, TraceMethod method);
+                       const Material& material, TraceMethod method, MaterialPtr pattern = nullptr);
 
 // The signed distance to the clip region (exact for a sphere and a box).
 double clip_distance(const ClipRegion& clip, const Vec3& p);

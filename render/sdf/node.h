@@ -103,6 +103,9 @@ class Node {
     virtual RootResult first_hit(const Ray& ray, Interval interval) const;
     // The children of an operation, for flattening top-level unions.
     virtual const std::vector<NodePtr>* union_children() const { return nullptr; }
+    // A placement of a plain union as the union of placed members (so that the tracer can
+    // flatten it and keep exact leaves exact); empty for every other node.
+    virtual std::vector<NodePtr> distribute_over_union() const { return {}; }
 
   protected:
     DistanceKind kind_ = DistanceKind::exact;

@@ -178,7 +178,8 @@ class Reader {
             throw InputError(source.key, "algebraic leaves need a surface compiler");
         }
         auto compiled = std::make_shared<const algebra::CompiledPolynomial>(compile_(source));
-        return make_algebraic(std::move(compiled), region, two_sided, method_);
+        return make_algebraic(std::move(compiled), region, two_sided, method_,
+                              material && material->checker ? material : nullptr);
     }
 
     NodePtr shape(const std::string& type, TableReader& r, const toml::table& table,
@@ -287,6 +288,9 @@ class Reader {
         if (r.find("twist") != nullptr) {
             node = make_twist(std::move(node), r.number("twist", 0.0));
         }
+        if (r.find("repeat") == nullptr && r.find("repeat_count") != nullptr) {
+            throw InputError("repeat_count", "needs repeat = [sx, sy, sz] (the spacing)");
+        }
         if (r.find("repeat") != nullptr) {
             const Vec3 spacing = r.vector("repeat", Vec3(0.0));
             std::array<std::optional<int>, 3> counts{};
@@ -310,7 +314,7 @@ class Reader {
             for (const char c : *axes) {
                 if (c < 'x' || c > 'z') {
                     throw InputError(
-                        path + "mirror",
+                        "mirror",
                         "expected axes among x, y, z such as \"xz\", found \"" + *axes + "\"");
                 }
                 mirrored[static_cast<std::size_t>(c - 'x')] = true;

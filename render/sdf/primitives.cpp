@@ -328,7 +328,7 @@ NodePtr make_plane(const Vec3& normal, double offset, MaterialPtr material) {
 
 NodePtr make_box(const Vec3& half, double rounding, MaterialPtr material) {
     for (int i = 0; i < 3; ++i) {
-        require_positive(half[i], "size");
+        require_positive(half[i], "half_size");
     }
     if (!(rounding >= 0.0) || rounding > std::min({half.x, half.y, half.z})) {
         throw InputError("rounding", "must be from 0 to the smallest half extent");
@@ -351,7 +351,7 @@ NodePtr make_cylinder(double radius, double half_height, MaterialPtr material) {
 NodePtr make_cone(double bottom, double top, double half_height, MaterialPtr material) {
     require_positive(half_height, "half_height");
     if (!(bottom >= 0.0) || !(top >= 0.0) || !(bottom + top > 0.0)) {
-        throw InputError("radius", "the cone's radii must be ≥ 0 and not both 0");
+        throw InputError("bottom_radius", "the cone's radii must be ≥ 0 and not both 0");
     }
     return std::make_shared<Cone>(bottom, top, half_height, std::move(material));
 }

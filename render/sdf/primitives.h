@@ -33,7 +33,7 @@ NodePtr make_superquadric(const Vec3& radii, double exponent, MaterialPtr materi
 // Soft objects (Wyvill, McPheeters and Wyvill 1986): F(p) = Σ wᵢ·C(|p − cᵢ|/Rᵢ) with the
 // cubic-in-r² falloff C(s) = 1 − 4/9 s⁶ + 17/9 s⁴ − 22/9 s² on s < 1; the surface is F = T.
 struct Metaball {
-    Vec3 center;
+    Vec3 center{0.0, 0.0, 0.0};
     double radius = 1.0;
     double weight = 1.0;
 };

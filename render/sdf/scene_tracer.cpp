@@ -18,6 +18,10 @@ void flatten(const NodePtr& node, std::vector<NodePtr>& out) {
         for (const NodePtr& child : *children) {
             flatten(child, out);
         }
+    } else if (std::vector<NodePtr> members = node->distribute_over_union(); !members.empty()) {
+        for (const NodePtr& member : members) {
+            flatten(member, out);
+        }
     } else {
         out.push_back(node);
     }
@@ -267,7 +271,12 @@ double SceneTracer::transmittance(const Ray& ray, double t_max, double penumbra,
         if (step > 0) {
             // Quilez's improved penumbra: the closest approach between this sample and the
             // previous one, not the sample itself.
-            const double y = h * h / (2.0 * previous);
+            // When the field grows faster than the step (h > 2·previous), the two spheres do
+            // not overlap and the estimate says nothing: take the sample itself.
+            double y = h * h / (2.0 * previous);
+            if (y >= h) {
+                y = 0.0;
+            }
             const double d = std::sqrt(std::max(0.0, h * h - y * y));
             light = std::min(light, penumbra * d / std::max(1e-12, t - y));
             if (light < 1e-3) {

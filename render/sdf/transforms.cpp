@@ -12,7 +12,7 @@ namespace locus::render::sdf {
 glm::dmat3 rotation_about(const Vec3& axis, double degrees) {
     const double length = glm::length(axis);
     if (!(length > 0.0)) {
-        throw InputError("rotate.axis", "must be non-zero");
+        throw InputError("rotate_axis", "must be non-zero");
     }
     const Vec3 u = axis / length;
     const double angle = degrees * std::numbers::pi / 180.0;
@@ -66,6 +66,18 @@ class Placement final : public Node {
     std::string_view type() const override { return "placement"; }
 
     bool traces_exactly() const override { return child_->traces_exactly(); }
+    std::vector<NodePtr> distribute_over_union() const override {
+        std::vector<NodePtr> members;
+        if (const std::vector<NodePtr>* children = child_->union_children()) {
+            members = *children;
+        } else {
+            members = child_->distribute_over_union();
+        }
+        for (NodePtr& member : members) {
+            member = std::make_shared<Placement>(member, rotation_, scale_, translation_);
+        }
+        return members;
+    }
     RootResult first_hit(const Ray& ray, Interval interval) const override {
         const Ray local{to_local(ray.origin), (inverse_ * ray.direction) / scale_};
         return child_->first_hit(local, interval);

@@ -297,6 +297,15 @@ TEST(SdfSceneFile, ErrorsNameTheNodeTheKeyAndThePosition) {
               "rounded_box, torus, cylinder, cone, capsule, ellipsoid, superquadric, "
               "soft_objects, algebraic, group, union, intersection, difference, smooth_union, "
               "smooth_intersection, smooth_difference");
+    // Regressions: the key path was doubled, factories named parameters that are not keys.
+    EXPECT_EQ(scene_error("[[object]]\ntype = \"sphere\"\nmirror = \"xw\"\n"),
+              "line 3, column 10: object[1].mirror: expected axes among x, y, z such as "
+              "\"xz\", found \"xw\"");
+    EXPECT_EQ(scene_error("[[object]]\ntype = \"box\"\nhalf_size = [1, -1, 1]\n"),
+              "line 3, column 13: object[1].half_size: must be a positive number");
+    EXPECT_EQ(scene_error("[[object]]\ntype = \"sphere\"\nrepeat_count = [1, 1, 1]\n"),
+              "line 3, column 16: object[1].repeat_count: needs repeat = [sx, sy, sz] (the "
+              "spacing)");
     // Without a compiler (the command line passes one), algebraic leaves are refused clearly.
     EXPECT_NE(scene_error("[[object]]\ntype = \"algebraic\"\nequation = \"x^2+y^2+z^2-1\"\n")
                   .find("object[1]"),

@@ -181,10 +181,28 @@ TEST(SdfRender, SpeedUpsChangeTheWorkNotThePicture) {
     EXPECT_LT(2 * fast_work, plain_work) << fast_work << " vs " << plain_work;
 }
 
+TEST(SdfRender, SoftShadowUnderAnOverheadLightIsNotBlack) {
+    // Regression: with the light straight above, the field grows by about the step itself
+    // along the shadow ray, the improved-penumbra estimate degenerated (y ≥ h gave d = 0) and
+    // the whole floor went dark.
+    const MaterialPtr m = plain_material();
+    const std::vector<NodePtr> objects{
+        make_plane({0, 1, 0}, 0.0, m),
+        make_placement(make_sphere(0.5, m), glm::dmat3(1.0), 1.0, {0, 1.5, 0})};
+    const SceneTracer tracer(objects, 2.0);
+    TraceCounters counters;
+    const double open = tracer.transmittance({{3, 1e-3, 0}, {0, 1, 0}}, 100.0, 20.0, counters);
+    EXPECT_GT(open, 0.99);
+    const double under = tracer.transmittance({{0, 1e-3, 0}, {0, 1, 0}}, 100.0, 20.0, counters);
+    EXPECT_EQ(under, 0.0);
+}
+
 TEST(SdfRender, AlgebraicSurfaceInAPlainUnionKeepsItsExactRoot) {
     const Scene scene = parse_scene(R"(
 [[object]]
 type = "union"
+translate = [0, 0, 0.0]
+scale = 1.0
   [[object.children]]
   type = "sphere"
   radius = 0.3
@@ -210,6 +228,31 @@ type = "union"
         ASSERT_EQ(exact.status, algebra::ExactRoot::Status::hit);
         EXPECT_NEAR(hit.t, exact.t, 1e-9);
         EXPECT_EQ(counters.evaluations, 0);  // no sphere tracing was needed
+    }
+    // A placement on the union is distributed over its members (regression: it made the
+    // union one sphere-traced item, the algebraic leaf an estimate).
+    const Scene moved = parse_scene(R"(
+[[object]]
+type = "union"
+translate = [0, 0.5, 0]
+  [[object.children]]
+  type = "sphere"
+  radius = 0.3
+  translate = [3, 0, 0]
+  [[object.children]]
+  type = "algebraic"
+  equation = "x^4+y^4+z^4-1"
+  clip_radius = 1.5
+)",
+                                    plain_compiler());
+    const SceneTracer moved_tracer(scene_items(moved, {}), 2.0);
+    {
+        const Ray ray{{0, 0.5, 5}, {0, 0, -1}};
+        TraceCounters counters;
+        const SceneHit hit = moved_tracer.first_hit(ray, {0, 20}, 1e-3, counters);
+        ASSERT_TRUE(hit.found());
+        EXPECT_NEAR(hit.t, 4.0, 1e-12);
+        EXPECT_EQ(counters.evaluations, 0);
     }
 }
 
