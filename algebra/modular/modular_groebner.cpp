@@ -1,0 +1,322 @@
+#include "algebra/modular/modular_groebner.h"
+
+#include <algorithm>
+
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+#include <flint/ulong_extras.h>
+
+#include "algebra/error.h"
+#include "algebra/groebner/verify.h"
+
+namespace locus::algebra {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using modular::ModularPolynomial;
+using modular::PrimeField;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One coefficient being lifted: its residue modulo the group's modulus (symmetric range).
+struct LiftedTerm {
+    std::vector<std::uint64_t> monomial;
+    Integer residue;
+};
+using LiftedElement = std::vector<LiftedTerm>;  // terms descending
+
+// The primes whose bases share one set of leading monomials, and the CRT of their bases.
+struct Group {
+    std::vector<std::uint64_t> signature;
+    std::vector<LiftedElement> elements;
+    Integer modulus{1};
+    std::size_t primes = 0;
+    std::size_t first_prime_position = 0;  // ties in the majority go to the earlier group
+    std::optional<std::vector<Polynomial>> candidate;
+};
+
+std::vector<std::uint64_t> signature_of(const std::vector<ModularPolynomial>& basis,
+                                        std::size_t words) {
+    std::vector<std::uint64_t> signature;
+    for (const ModularPolynomial& g : basis) {
+        signature.insert(signature.end(), g.monomials.begin(), g.monomials.begin() + words);
+    }
+    return signature;
+}
+
+// Combines the residues of the group (modulo M) with a basis modulo p; monomials missing on
+// one side have residue 0 there.
+void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std::uint32_t p,
+                  const MonomialLayout& layout) {
+    const std::size_t words = layout.words();
+    if (group.primes == 0) {
+        group.elements.clear();
+        for (const ModularPolynomial& g : basis) {
+            LiftedElement element;
+            for (std::size_t i = 0; i < g.size(); ++i) {
+                const std::uint64_t* m = g.monomial(i, words);
+                LiftedTerm term{std::vector<std::uint64_t>(m, m + words), Integer()};
+                // Symmetric residue.
+                const long c = g.coefficients[i] > p / 2
+                                   ? static_cast<long>(g.coefficients[i]) - static_cast<long>(p)
+                                   : static_cast<long>(g.coefficients[i]);
+                fmpz_set_si(term.residue.get(), c);
+                element.push_back(std::move(term));
+            }
+            group.elements.push_back(std::move(element));
+        }
+    } else {
+        Integer combined;
+        for (std::size_t e = 0; e < basis.size(); ++e) {
+            const ModularPolynomial& g = basis[e];
+            LiftedElement& old = group.elements[e];
+            LiftedElement merged;
+            merged.reserve(std::max(old.size(), g.size()));
+            std::size_t a = 0, b = 0;
+            while (a < old.size() || b < g.size()) {
+                int order = 0;  // > 0: old term first, < 0: new term first
+                if (a == old.size()) {
+                    order = -1;
+                } else if (b == g.size()) {
+                    order = 1;
+                } else {
+                    order = layout.compare(old[a].monomial.data(), g.monomial(b, words));
+                }
+                LiftedTerm term;
+                std::uint64_t residue = 0;
+                if (order >= 0) {
+                    term = std::move(old[a++]);
+                    if (order == 0) {
+                        residue = g.coefficients[b++];
+                    }
+                } else {
+                    const std::uint64_t* m = g.monomial(b, words);
+                    term.monomial.assign(m, m + words);
+                    residue = g.coefficients[b++];
+                }
+                fmpz_CRT_ui(combined.get(), term.residue.get(), group.modulus.get(), residue, p, 1);
+                fmpz_swap(term.residue.get(), combined.get());
+                merged.push_back(std::move(term));
+            }
+            old = std::move(merged);
+        }
+    }
+    fmpz_mul_ui(group.modulus.get(), group.modulus.get(), p);
+    ++group.primes;
+}
+
+// Rational reconstruction of every coefficient; nothing when one fails.
+std::optional<std::vector<Polynomial>> reconstruct(const Group& group, const RingPtr& ring) {
+    std::vector<Polynomial> basis;
+    Integer reduced;
+    Rational value;
+    for (const LiftedElement& element : group.elements) {
+        Polynomial poly(ring);
+        for (const LiftedTerm& term : element) {
+            fmpz_mod(reduced.get(), term.residue.get(), group.modulus.get());
+            if (fmpz_is_zero(reduced.get())) {
+                continue;
+            }
+            if (!fmpq_reconstruct_fmpz(value.get(), reduced.get(), group.modulus.get())) {
+                return std::nullopt;
+            }
+            poly.push_back_term(value, term.monomial.data());
+        }
+        basis.push_back(std::move(poly));
+    }
+    return basis;
+}
+
+// Does the candidate over Q reduce to exactly this basis modulo p?
+bool agrees_modulo(const std::vector<Polynomial>& candidate,
+                   const std::vector<ModularPolynomial>& basis, const PrimeField& field) {
+    if (candidate.size() != basis.size()) {
+        return false;
+    }
+    for (std::size_t e = 0; e < basis.size(); ++e) {
+        const std::optional<ModularPolynomial> reduced =
+            modular::reduce_modulo(candidate[e], field);
+        if (!reduced || reduced->coefficients != basis[e].coefficients ||
+            reduced->monomials != basis[e].monomials) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Reconstruct after 1, 2, 3, 4, 6, 8, 12, 16, … primes: a failed reconstruction costs as much
+// as a prime, so the attempts thin out geometrically.
+bool worth_reconstructing(std::size_t primes) {
+    std::size_t next = 1;
+    while (next < primes) {
+        next = next < 4 ? next + 1 : next + next / 2;
+    }
+    return next == primes;
+}
+
+class PrimeSequence {
+  public:
+    explicit PrimeSequence(const std::vector<std::uint32_t>& forced) : forced_(forced) {}
+    // Never the same prime twice: a repeated prime would agree with itself.
+    std::uint32_t next() {
+        while (position_ < forced_.size()) {
+            const std::uint32_t p = forced_[position_++];
+            if (std::find(forced_.begin(), forced_.begin() + position_ - 1, p) ==
+                forced_.begin() + position_ - 1) {
+                return p;
+            }
+        }
+        do {
+            last_ = modular::previous_prime(last_);
+        } while (std::find(forced_.begin(), forced_.end(), last_) != forced_.end());
+        return last_;
+    }
+
+  private:
+    const std::vector<std::uint32_t>& forced_;
+    std::size_t position_ = 0;
+    std::uint32_t last_ = 1u << 31;
+};
+
+}  // namespace
+
+GroebnerResult modular_groebner(std::span<const Polynomial> generators,
+                                const ModularOptions& options, ModularStats* stats) {
+    const auto start = Clock::now();
+    ModularStats local;
+    ModularStats& s = stats != nullptr ? *stats : local;
+    s = ModularStats{};
+    std::vector<Polynomial> inputs;
+    for (const Polynomial& f : generators) {
+        if (!inputs.empty()) {
+            require_same_ring(inputs.front(), f);
+        }
+        if (!f.is_zero()) {
+            inputs.push_back(f);
+        }
+    }
+    GroebnerResult result;
+    if (inputs.empty()) {
+        result.stats.seconds = seconds_since(start);
+        return result;
+    }
+    const RingPtr ring = inputs.front().ring();
+    const MonomialLayout& layout = ring->layout();
+    modular::F4Options f4_options;
+    f4_options.deadline = options.deadline;
+
+    std::vector<Group> groups;
+    PrimeSequence primes(options.primes);
+    while (s.primes_used.size() < options.max_primes) {
+        const std::uint32_t p = primes.next();
+        s.primes_used.push_back(p);
+        const PrimeField field{p};
+        std::vector<ModularPolynomial> reduced;
+        bool usable = true;
+        for (const Polynomial& f : inputs) {
+            std::optional<ModularPolynomial> g = modular::reduce_modulo(f, field);
+            if (!g) {
+                usable = false;
+                break;
+            }
+            reduced.push_back(std::move(*g));
+        }
+        if (!usable) {
+            ++s.unlucky_primes;
+            continue;
+        }
+        const auto f4_start = Clock::now();
+        modular::F4Stats f4_stats;
+        const std::vector<ModularPolynomial> basis =
+            modular::f4(reduced, layout, field, f4_options, &f4_stats);
+        if (s.primes_used.size() == 1 || s.f4.steps == 0) {
+            s.f4 = f4_stats;
+        }
+        s.modular_seconds += seconds_since(f4_start);
+
+        const auto lift_start = Clock::now();
+        const std::vector<std::uint64_t> signature = signature_of(basis, layout.words());
+        auto group = std::find_if(groups.begin(), groups.end(),
+                                  [&](const Group& g) { return g.signature == signature; });
+        if (group == groups.end()) {
+            groups.push_back({signature, {}, Integer(1), 0, s.primes_used.size(), std::nullopt});
+            group = groups.end() - 1;
+        }
+        // The candidate of this group, built from other primes, meets a fresh prime.
+        if (group->candidate && agrees_modulo(*group->candidate, basis, field)) {
+            s.lift_seconds += seconds_since(lift_start);
+            std::vector<Polynomial> candidate = *group->candidate;
+            if (options.certify) {
+                const auto certify_start = Clock::now();
+                const BasisCheck check = check_groebner_basis(candidate, inputs);
+                s.certify_seconds += seconds_since(certify_start);
+                if (!check.ok) {
+                    group->candidate.reset();  // stable but wrong: lift with more primes
+                    continue;
+                }
+                s.certified = true;
+            }
+            std::size_t in_group = group->primes;
+            s.unlucky_primes = s.primes_used.size() - 1 - in_group;
+            result.basis = std::move(candidate);
+            result.stats.seconds = seconds_since(start);
+            result.stats.max_basis_size = result.basis.size();
+            result.stats.pairs_created = s.f4.pairs_created;
+            result.stats.removed_by_product = s.f4.removed_by_product;
+            result.stats.removed_by_chain = s.f4.removed_by_chain;
+            result.stats.reductions = s.f4.pairs_reduced;
+            result.stats.zero_reductions = s.f4.zero_rows;
+            return result;
+        }
+        add_to_group(*group, basis, p, layout);
+        if (worth_reconstructing(group->primes)) {
+            group->candidate = reconstruct(*group, ring);
+        }
+        s.lift_seconds += seconds_since(lift_start);
+    }
+    throw InputError("modular Gröbner basis",
+                     "no stable lift after " + std::to_string(options.max_primes) + " primes");
+}
+
+std::vector<Polynomial> groebner_modulo(std::span<const Polynomial> generators, std::uint32_t p,
+                                        const modular::F4Options& options,
+                                        modular::F4Stats* stats) {
+    if (p < 2 || p >= (1u << 31) || !n_is_prime(p)) {
+        throw InputError("--prime " + std::to_string(p), "expected a prime below 2^31");
+    }
+    const PrimeField field{p};
+    std::vector<ModularPolynomial> reduced;
+    RingPtr ring;
+    for (const Polynomial& f : generators) {
+        if (ring) {
+            require_same_ring(generators.front(), f);
+        }
+        ring = f.ring();
+        std::optional<ModularPolynomial> g = modular::reduce_modulo(f, field);
+        if (!g) {
+            throw InputError("--prime " + std::to_string(p),
+                             "the prime divides a denominator of the input");
+        }
+        if (!g->is_zero()) {
+            reduced.push_back(std::move(*g));
+        }
+    }
+    std::vector<Polynomial> out;
+    if (!ring) {
+        return out;
+    }
+    for (const ModularPolynomial& g : modular::f4(reduced, ring->layout(), field, options, stats)) {
+        Polynomial poly(ring);
+        for (std::size_t i = 0; i < g.size(); ++i) {
+            poly.push_back_term(Rational(static_cast<long>(g.coefficients[i])),
+                                g.monomial(i, ring->words()));
+        }
+        out.push_back(std::move(poly));
+    }
+    return out;
+}
+
+}  // namespace locus::algebra
