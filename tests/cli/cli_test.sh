@@ -52,7 +52,12 @@ expect "missing file" 2 "cannot open" -- "$locus" groebner "$tmp/nothing.ideal"
 expect "bad --order" 2 "--order" -- "$locus" groebner $known/cyclic4_grevlex.ideal --order 'weights(1)'
 expect "bad --format" 2 "expected normalized, singular, macaulay2 or latex" -- \
     "$locus" groebner $known/cyclic4_grevlex.ideal --format maple
-expect "timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/cyclic6.ideal --timeout 0.05
+expect "timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/cyclic6.ideal --timeout 0.05 --algorithm buchberger
+expect "modular timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/katsura9.ideal --timeout 0.2
+expect "modular result is certified" 0 "certified over Q" -- "$locus" groebner bench/data/cyclic6.ideal --algorithm modular --stats
+expect "f4 modulo a prime" 0 "x0+2*x1+2*x2+2*x3+2*x4+65520" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65521
+expect "f4: not a prime" 2 "expected a prime below 2^31" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65520
+expect "unknown algorithm" 2 "expected auto, buchberger, f4 or modular" -- "$locus" groebner bench/data/katsura5.ideal --algorithm magic
 
 printf 'vars: x,y,z\nx^2-y\nx*y-z\n' > "$tmp/twisted.ideal"
 expect "member with cofactors" 0 "cofactor 2:" -- "$locus" ideal member "$tmp/twisted.ideal" "x^3-z"
@@ -118,5 +123,5 @@ expect "trace prints hits and misses" 0 "" -- bash -c \
 expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a decimal number" -- \
     bash -c "printf '0 0 5 0 0 -1\n0 0 5 x 0 -1\n' | \"$locus\" trace 'x^2+y^2+z^2-1'"
 
-echo "$((48 - failures)) passed, $failures failed"
+echo "$((53 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]
