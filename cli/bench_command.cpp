@@ -19,6 +19,7 @@
 
 #include "algebra/error.h"
 #include "algebra/groebner/buchberger.h"
+#include "algebra/modular/modular_groebner.h"
 #include "algebra/print.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -46,6 +47,7 @@ struct BenchArgs {
     int threads = 1;
     std::vector<std::string> methods;
     std::string surf = "surf-alggeo-nox";
+    std::string algorithm = "auto";  // groebner suite: as `locus groebner --algorithm`
 };
 
 struct Timing {
@@ -297,6 +299,10 @@ int run_bench(const BenchArgs& args) {
         throw CommandFailure(exit_input, "bench: unknown suite '" + args.suite +
                                              "' (available: groebner, implicit, render, sdf)");
     }
+    if (args.algorithm != "auto" && args.algorithm != "buchberger" && args.algorithm != "modular") {
+        throw CommandFailure(
+            exit_input, "--algorithm " + args.algorithm + ": expected auto, buchberger or modular");
+    }
     const std::vector<std::string> cases = suite_cases(args, args.data_dir);
     const bool with_singular = args.singular != "off" && on_path(args.singular);
     if (args.csv) {
@@ -315,7 +321,9 @@ int run_bench(const BenchArgs& args) {
         algebra::GroebnerResult result;
         const auto start = std::chrono::steady_clock::now();
         do {
-            result = algebra::groebner(ideal.generators);
+            result = args.algorithm == "modular" ? algebra::modular_groebner(ideal.generators)
+                     : args.algorithm == "auto"  ? algebra::groebner_automatic(ideal.generators)
+                                                 : algebra::groebner(ideal.generators);
             ++mine.runs;
             mine.seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -368,6 +376,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
     cmd->add_option("suite", args->suite, "the suite: groebner | implicit | render | sdf")
         ->required();
     cmd->add_flag("--csv", args->csv, "write CSV rows instead of a table");
+    cmd->add_option("--algorithm", args->algorithm,
+                    "groebner suite: auto (default) | buchberger | modular (certified)");
     cmd->add_option("--data", args->data_dir, "folder with SUITE.txt and the .ideal files");
     cmd->add_option("--cases", args->cases, "run only these cases")->delimiter(',');
     cmd->add_option("--singular", args->singular,

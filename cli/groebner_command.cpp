@@ -1,5 +1,4 @@
 // `locus groebner FILE`: the reduced Gröbner basis of an ideal file, normalized, on stdout.
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -42,14 +41,6 @@ void print_modular_stats(const algebra::ModularStats& s) {
                  s.certified ? "certified over Q: the input reduces to zero and every S-pair "
                                "left by the criteria reduces to zero"
                              : "NOT certified (--no-certify): the basis is probabilistic");
-}
-
-// `auto`: Buchberger for orders whose first row is not positive (lex, elimination), where F4
-// must take one pair at a time and the certification costs more than Buchberger itself on the
-// bench suite; multi-modular F4 for degree orders, where it is 3–70× faster on the suite.
-bool prefers_modular(const algebra::MonomialOrder& order) {
-    const auto& first_row = order.matrix_rows().front();
-    return std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
 }
 
 void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring) {
@@ -121,24 +112,29 @@ int run_groebner(const GroebnerArgs& args) {
         }
         return exit_ok;
     }
-    const bool modular = args.algorithm == "modular" ||
-                         (args.algorithm == "auto" && prefers_modular(ideal.ring->order()));
     algebra::GroebnerResult result;
     algebra::ModularStats modular_stats;
-    if (modular) {
-        algebra::ModularOptions modular_options;
-        modular_options.deadline = options.deadline;
-        modular_options.certify = !args.no_certify;
-        try {
+    bool modular = args.algorithm == "modular";
+    try {
+        if (modular) {
+            algebra::ModularOptions modular_options;
+            modular_options.deadline = options.deadline;
+            modular_options.certify = !args.no_certify;
             result = algebra::modular_groebner(ideal.generators, modular_options, &modular_stats);
-        } catch (const Timeout&) {
-            throw CommandFailure(exit_timeout, "timeout: the modular algorithm stopped after " +
-                                                   seconds_text(args.timeout_seconds));
+        } else if (args.algorithm == "auto") {
+            options.progress = terminal_progress("groebner");
+            result =
+                algebra::groebner_automatic(ideal.generators, options, &modular_stats, &modular);
+            finish_progress();
+        } else {
+            options.progress = terminal_progress("groebner");
+            result = algebra::groebner(ideal.generators, options);
+            finish_progress();
         }
-    } else {
-        options.progress = terminal_progress("groebner");
-        result = algebra::groebner(ideal.generators, options);
+    } catch (const Timeout&) {
         finish_progress();
+        throw CommandFailure(exit_timeout, "timeout: the modular algorithm stopped after " +
+                                               seconds_text(args.timeout_seconds));
     }
     if (result.outcome == algebra::GroebnerOutcome::stopped_timeout) {
         if (args.stats) {

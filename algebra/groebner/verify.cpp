@@ -1,6 +1,8 @@
 #include "algebra/groebner/verify.h"
 
 #include "algebra/division.h"
+#include "algebra/groebner/pair_criteria.h"
+#include "algebra/groebner/reduction.h"
 #include "algebra/print.h"
 
 namespace locus::algebra {
@@ -56,6 +58,58 @@ BasisCheck check_groebner_basis(std::span<const Polynomial> basis,
     BasisCheck pairs = check_groebner_basis(basis);
     pairs.generators_checked = check.generators_checked;
     return pairs;
+}
+
+BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
+                                  std::span<const Polynomial> generators) {
+    BasisCheck check;
+    if (basis.empty()) {
+        for (const Polynomial& g : generators) {
+            ++check.generators_checked;
+            if (!g.is_zero()) {
+                check.ok = false;
+                check.failure = "generator " + std::to_string(check.generators_checked) +
+                                " is not in the zero ideal";
+                return check;
+            }
+        }
+        return check;
+    }
+    const RingPtr& ring = basis.front().ring();
+    const MonomialLayout& layout = ring->layout();
+    std::vector<detail::BasisElement> elements;
+    std::vector<detail::CriticalPair> pairs;
+    detail::CriteriaCounts counts;
+    for (const Polynomial& g : basis) {
+        elements.push_back({detail::to_integer_polynomial(g), false});
+        detail::gebauer_moller_update(elements, pairs, elements.size() - 1, layout, counts);
+    }
+    detail::Reducer reducer(layout);
+    detail::ReductionCounts steps;
+    for (std::size_t i = 0; i < generators.size(); ++i) {
+        ++check.generators_checked;
+        if (generators[i].is_zero()) {
+            continue;
+        }
+        if (!reducer.reduce(detail::to_integer_polynomial(generators[i]), elements, steps, false)
+                 .empty()) {
+            check.ok = false;
+            check.failure = "generator " + std::to_string(i + 1) + " does not reduce to zero";
+            return check;
+        }
+    }
+    for (const detail::CriticalPair& pair : pairs) {
+        ++check.pairs_checked;
+        const detail::IntegerPolynomial s = reducer.s_polynomial(
+            elements[pair.first].poly, elements[pair.second].poly, pair.lcm.data(), pair.sugar);
+        if (!reducer.reduce(s, elements, steps, false).empty()) {
+            check.ok = false;
+            check.failure = "S-polynomial of elements " + std::to_string(pair.first + 1) + " and " +
+                            std::to_string(pair.second + 1) + " does not reduce to zero";
+            return check;
+        }
+    }
+    return check;
 }
 
 bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polynomial> generators) {

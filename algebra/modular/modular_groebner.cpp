@@ -8,6 +8,7 @@
 
 #include "algebra/error.h"
 #include "algebra/groebner/verify.h"
+#include "algebra/modular/fglm.h"
 
 namespace locus::algebra {
 
@@ -207,6 +208,17 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
     const MonomialLayout& layout = ring->layout();
     modular::F4Options f4_options;
     f4_options.deadline = options.deadline;
+    // Under lex and other non-degree orders a zero-dimensional ideal is computed under grevlex
+    // and converted by FGLM; `via_grevlex` is dropped as soon as the ideal turns out not to be
+    // zero-dimensional.
+    bool via_grevlex = !is_degree_order(ring->order());
+    const RingPtr grevlex_ring = ring->with_order(MonomialOrder::grevlex(ring->num_vars()));
+    std::vector<Polynomial> grevlex_inputs;
+    if (via_grevlex) {
+        for (const Polynomial& f : inputs) {
+            grevlex_inputs.push_back(f.in_ring(grevlex_ring));
+        }
+    }
 
     std::vector<Group> groups;
     PrimeSequence primes(options.primes);
@@ -230,8 +242,23 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         }
         const auto f4_start = Clock::now();
         modular::F4Stats f4_stats;
+        std::optional<std::vector<ModularPolynomial>> converted;
+        if (via_grevlex) {
+            std::vector<ModularPolynomial> reduced_grevlex;
+            for (const Polynomial& f : grevlex_inputs) {
+                reduced_grevlex.push_back(*modular::reduce_modulo(f, field));
+            }
+            converted = modular::fglm(
+                modular::f4(reduced_grevlex, grevlex_ring->layout(), field, f4_options, &f4_stats),
+                grevlex_ring->layout(), layout, field);
+            via_grevlex = converted.has_value();
+            if (converted) {
+                s.fglm = true;
+            }
+        }
         const std::vector<ModularPolynomial> basis =
-            modular::f4(reduced, layout, field, f4_options, &f4_stats);
+            converted ? std::move(*converted)
+                      : modular::f4(reduced, layout, field, f4_options, &f4_stats);
         if (s.primes_used.size() == 1 || s.f4.steps == 0) {
             s.f4 = f4_stats;
         }
@@ -251,7 +278,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
             std::vector<Polynomial> candidate = *group->candidate;
             if (options.certify) {
                 const auto certify_start = Clock::now();
-                const BasisCheck check = check_groebner_basis(candidate, inputs);
+                const BasisCheck check = certify_groebner_basis(candidate, inputs);
                 s.certify_seconds += seconds_since(certify_start);
                 if (!check.ok) {
                     group->candidate.reset();  // stable but wrong: lift with more primes
@@ -279,6 +306,41 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
     }
     throw InputError("modular Gröbner basis",
                      "no stable lift after " + std::to_string(options.max_primes) + " primes");
+}
+
+GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
+                                  const GroebnerOptions& options, ModularStats* stats,
+                                  bool* used_modular) {
+    if (used_modular != nullptr) {
+        *used_modular = false;
+    }
+    if (generators.empty()) {
+        return groebner(generators, options);
+    }
+    GroebnerOptions probing = options;
+    const auto probe = is_degree_order(generators.front().ring()->order())
+                           ? std::chrono::milliseconds(20)
+                           : std::chrono::milliseconds(5);
+    const auto probe_end = Clock::now() + probe;
+    probing.deadline = options.deadline ? std::min(*options.deadline, probe_end) : probe_end;
+    GroebnerResult result = groebner(generators, probing);
+    if (result.outcome != GroebnerOutcome::stopped_timeout ||
+        (options.deadline && Clock::now() >= *options.deadline)) {
+        return result;
+    }
+    if (used_modular != nullptr) {
+        *used_modular = true;
+    }
+    ModularOptions modular_options;
+    modular_options.deadline = options.deadline;
+    GroebnerResult modular = modular_groebner(generators, modular_options, stats);
+    modular.stats.seconds += result.stats.seconds;
+    return modular;
+}
+
+bool is_degree_order(const MonomialOrder& order) {
+    const auto& first_row = order.matrix_rows().front();
+    return std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
 }
 
 std::vector<Polynomial> groebner_modulo(std::span<const Polynomial> generators, std::uint32_t p,
