@@ -80,6 +80,38 @@ TEST(Modular, AgreesWithSingularOracleOnRandomIdeals) {
     EXPECT_GE(cases, 200);
 }
 
+TEST(Modular, LexGoesThroughFglmExactlyWhenTheIdealIsZeroDimensional) {
+    const std::string dir = test::source_dir() + "/bench/data/";
+    for (const auto& [name, zero_dimensional] :
+         std::vector<std::pair<std::string, bool>>{{"katsura5_lex", true},
+                                                   {"cyclic5_lex", true},
+                                                   {"cyclic4_lex", false},
+                                                   {"whitney_elim", false}}) {
+        SCOPED_TRACE(name);
+        const IdealFile ideal = parse_ideal_file(test::read_text(dir + name + ".ideal"));
+        ModularStats stats;
+        const GroebnerResult r = modular_groebner(ideal.generators, {}, &stats);
+        EXPECT_EQ(stats.fglm, zero_dimensional);
+        EXPECT_TRUE(stats.certified);
+        EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
+                  format_polynomials(groebner(ideal.generators).basis, *ideal.ring,
+                                     OutputFormat::normalized));
+    }
+}
+
+TEST(Modular, AutomaticAgreesWithBuchbergerOnTheBenchSuite) {
+    const std::string dir = test::source_dir() + "/bench/data/";
+    for (const std::string name : {"cyclic5", "katsura6", "eco6", "noon4", "katsura4_lex",
+                                   "tangent_surface_elim", "enneper_elim"}) {
+        SCOPED_TRACE(name);
+        const IdealFile ideal = parse_ideal_file(test::read_text(dir + name + ".ideal"));
+        EXPECT_EQ(format_polynomials(groebner_automatic(ideal.generators).basis, *ideal.ring,
+                                     OutputFormat::normalized),
+                  format_polynomials(groebner(ideal.generators).basis, *ideal.ring,
+                                     OutputFormat::normalized));
+    }
+}
+
 TEST(Modular, UnluckyPrimeIsDetectedAndSetAside) {
     // Modulo p the first generator loses its leading term x and the ideal becomes the unit
     // ideal: leading monomials {1} against {x, y²} over Q.
