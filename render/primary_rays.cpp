@@ -20,7 +20,8 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
     result.ray_lengths.resize(pixels);
     const double scale = bounding_sphere(region).radius;
     const SurfaceTracer tracer(f, method, scale);
-    const bool uses_family = method != TraceMethod::sphere_gradient && method != TraceMethod::exact;
+    const bool uses_family = method != TraceMethod::sphere_gradient &&
+                             method != TraceMethod::exact && f.degree() <= kMaxFamilyDegree;
     const RayFamily family(f, camera, bounding_sphere(region).center, width);
     auto trace_row = [&](int y) {
         RowExpansion row;

@@ -33,6 +33,12 @@ struct RowExpansion {
     std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> row;
 };
 
+// Above this degree primary rays are restricted one by one (LineRestrictor about the middle of
+// each ray's interval) instead of from the family: the per-row interpolation of H_k lost about
+// 5e-6 in depth on the degree-20 Chmutov surface (stability atlas, chmutov_20), above the
+// 1e-6 × clip radius that counts as wrong, while every ray traced alone was within it.
+inline constexpr int kMaxFamilyDegree = 16;
+
 class RayFamily {
   public:
     // `center`: a point the restriction is expanded about (the clip region's centre); `width`:

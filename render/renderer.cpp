@@ -37,8 +37,11 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         shaded.push_back({&tracers[i], scene.surfaces[i].clip, scene.surfaces[i].material});
     }
     const Shader shader(shaded, lights, scene.options, scale);
-    const bool uses_family = scene.options.method != TraceMethod::sphere_gradient &&
-                             scene.options.method != TraceMethod::exact;
+    bool uses_family = scene.options.method != TraceMethod::sphere_gradient &&
+                       scene.options.method != TraceMethod::exact;
+    for (const algebra::CompiledPolynomial& f : surfaces) {
+        uses_family = uses_family && f.degree() <= kMaxFamilyDegree;
+    }
 
     RenderedImage image;
     image.width = scene.width;

@@ -38,6 +38,13 @@ struct RayPolynomial {
 
 enum class RootStatus { hit, miss, unknown };
 
+// Set by Sturm as the `reason` of a hit or miss that deserves a second opinion (see sturm.cpp):
+// its chain ended at a near-common factor of F and F' (multiple or very close roots), or had a
+// suspiciously small remainder, or the degree is high.
+inline constexpr const char* kNearCommonFactor =
+    "near-common factor of F and F' (multiple or very close roots)";
+inline constexpr const char* kSecondOpinion = "small remainder in the chain, or high degree";
+
 struct RootResult {
     RootStatus status = RootStatus::miss;
     double t = 0.0;           // the root when status == hit

@@ -66,15 +66,56 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
     if (method_ == TraceMethod::sphere_lipschitz) {
         found = sphere_trace_lipschitz(restriction, shifted,
                                        1e-9 * scale_ / glm::length(ray.direction));
-    } else {
-        found = first_root(finder_, restriction, shifted.lo, shifted.hi);
-        if (found.status == RootStatus::unknown && method_ != TraceMethod::bernstein) {
-            // The method could not decide (an inconsistent Sturm chain, an iteration cap):
-            // Bernstein subdivision answers the same question from the same coefficients.
-            const int work = found.work;
-            found = BernsteinRootFinder{}.first_root(restriction, shifted.lo, shifted.hi);
-            found.work += work;
+        found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
+        return found;
+    }
+    found = first_root(finder_, restriction, shifted.lo, shifted.hi);
+    const bool near_multiple = found.reason == kNearCommonFactor;
+    if (found.status != RootStatus::unknown && (near_multiple || found.reason == kSecondOpinion)) {
+        // Multiple or very close roots: Laguerre with deflation separates what the Sturm
+        // chain merged (the stability atlas' near-double roots); the earlier hit wins.
+        const RootResult second =
+            LaguerreRootFinder{}.first_root(restriction, shifted.lo, shifted.hi);
+        found.work += second.work;
+        // "Earlier" beyond the accuracy of multiple roots (Laguerre has a triple root only
+        // to about 1e-6 of the interval), so a triple point keeps the better of the two.
+        const double reach = 1e-4 * (shifted.hi - shifted.lo);
+        auto magnitude_at = [&](double t) {
+            double value = 0.0;
+            for (int k = restriction.degree; k >= 0; --k) {
+                value = value * t + restriction.c[static_cast<std::size_t>(k)];
+            }
+            return std::abs(value);
+        };
+        if (second.status == RootStatus::hit &&
+            (found.status == RootStatus::miss || second.t < found.t - reach ||
+             // The same multiple root: keep the one where F is smaller (Sturm's bracketed
+             // refinement stops 2e-6 short of a triple point that Laguerre lands on).
+             (std::abs(second.t - found.t) <= reach &&
+              magnitude_at(second.t) < magnitude_at(found.t)))) {
+            found.status = RootStatus::hit;
+            found.t = second.t;
         }
+    }
+    if (found.status == RootStatus::unknown && method_ != TraceMethod::bernstein) {
+        // The method could not decide (an inconsistent Sturm chain, an iteration cap):
+        // Bernstein subdivision answers the same question from the same coefficients.
+        const int work = found.work;
+        found = BernsteinRootFinder{}.first_root(restriction, shifted.lo, shifted.hi);
+        found.work += work;
+    }
+    if (near_multiple && found.status == RootStatus::miss) {
+        // A near-double root that both floating methods call a miss: a near-tangent ray whose
+        // two roots may lie closer than doubles resolve (two spheres 1e-8 apart, at their
+        // silhouette; stability atlas twin_spheres_1e-8). The certified method decides.
+        const algebra::ExactRoot root = algebra::exact_first_root(
+            *f_, to_point(ray.origin), to_point(ray.direction), interval.lo, interval.hi);
+        ++found.work;
+        if (root.status != algebra::ExactRoot::Status::miss) {
+            found.status = RootStatus::hit;
+            found.t = root.t;
+        }
+        return found;
     }
     found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
     return found;

@@ -333,9 +333,18 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     }
     ModularOptions modular_options;
     modular_options.deadline = options.deadline;
-    GroebnerResult modular = modular_groebner(generators, modular_options, stats);
-    modular.stats.seconds += result.stats.seconds;
-    return modular;
+    try {
+        GroebnerResult modular = modular_groebner(generators, modular_options, stats);
+        modular.stats.seconds += result.stats.seconds;
+        return modular;
+    } catch (const InputError&) {
+        // No stable lift within max_primes (coefficients of tens of thousands of digits):
+        // Buchberger over Q gets there without guessing sizes.
+        if (used_modular != nullptr) {
+            *used_modular = false;
+        }
+        return groebner(generators, options);
+    }
 }
 
 bool is_degree_order(const MonomialOrder& order) {

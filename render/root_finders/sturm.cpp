@@ -42,6 +42,9 @@ constexpr double kRemainderZero = 1e-13;
 // zero within rounding). The check is by value, so a large threshold costs time, not accuracy.
 constexpr double kRemainderSuspect = 1e-5;
 
+// Restrictions of this degree and above always get a second opinion (see first_root).
+constexpr int kCrossCheckDegree = 16;
+
 // Effort allowed per ray (bisections on counts and refinement steps) before the method gives
 // up with RootStatus::unknown; one isolation exhausts the unit interval in doubles in ~50.
 constexpr int kMaxWork = 200;
@@ -450,9 +453,23 @@ RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double
     }
     int work = 0;
     double t = NAN;
+    const char* flag = "";
     if (u.degree > 0) {
         SturmSequence seq;
         build_sequence(u.g, u.degree, seq);
+        // The chain ended at a near-common factor of G and G': a multiple root, or two roots
+        // closer than rounding can separate. Counting on such a chain skipped the first pair of
+        // two spheres 1e-6 apart and a triple root at the middle of the interval (stability
+        // atlas: twin_spheres, steiner_lines, nested_rays), so the answer carries a flag that
+        // lets SurfaceTracer confirm it with another method.
+        // From degree 16 on, a floating chain is fragile even without a small remainder: on
+        // ten nested spheres (degree 20) the count skipped a simple root while a tangent sat
+        // at the middle of the interval (stability atlas, nested_rays).
+        if (seq.degree[seq.size - 1] > 0) {
+            flag = kNearCommonFactor;
+        } else if (seq.suspect >= 0 || u.degree >= kCrossCheckDegree) {
+            flag = kSecondOpinion;
+        }
         const CountedRoot counted = first_counted_root(seq, u, work);
         if (counted.failure != nullptr) {
             return detail::unknown(counted.failure, work);
@@ -470,11 +487,12 @@ RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double
             }
         }
     }
-    if (!std::isnan(t)) {
-        return detail::hit(t, work);
-    }
-    return detail::is_zero_within_rounding(f.c.data(), screening.degree, hi) ? detail::hit(hi, work)
-                                                                             : detail::miss(work);
+    RootResult result = !std::isnan(t) ? detail::hit(t, work)
+                        : detail::is_zero_within_rounding(f.c.data(), screening.degree, hi)
+                            ? detail::hit(hi, work)
+                            : detail::miss(work);
+    result.reason = flag;
+    return result;
 }
 
 }  // namespace locus::render

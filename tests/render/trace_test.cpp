@@ -140,6 +140,68 @@ TEST_P(EveryMethod, TangentRayToASphereIsAHit) {
 
 INSTANTIATE_TEST_SUITE_P(Trace, EveryMethod, ::testing::ValuesIn(all_trace_methods()), method_name);
 
+// Regressions from the stability atlas (docs/stability.md), for the default method: each ray is
+// traced by sturm and by the certified exact method and must agree within the atlas tolerance
+// (1e-6 here: a pair of roots 1e-8 apart is resolved only to about 2e-8).
+TEST(StabilityAtlas, SturmAgreesWithExactOnTheAtlasProbes) {
+    struct Probe {
+        const char* equation;
+        Ray ray;
+        double t_max;
+        const char* why;
+    };
+    const std::string nested = [] {
+        // Built piece by piece: GCC 12 warns (-Wrestrict, a false positive) on the chained form.
+        std::string product;
+        for (int k = 1; k <= 10; ++k) {
+            if (k > 1) {
+                product += '*';
+            }
+            product += "(x^2+y^2+z^2-";
+            product += std::to_string(k * k);
+            product += "/100)";
+        }
+        return product;
+    }();
+    const Probe probes[] = {
+        {"(x^2+y^2+z^2-1)*(x^2+y^2+z^2-1.000001)",
+         {{0.903, 0, -2}, {0, 0, 1}},
+         4.0,
+         "two spheres 1e-6 apart: Sturm's chain merged the entry pair and reported the exit"},
+        {"(x^2+y^2+z^2-1)*(x^2+y^2+z^2-1.00000001)",
+         {{0.999, 0, -2}, {0, 0, 1}},
+         4.0,
+         "two spheres 1e-8 apart"},
+        {"x^2*y^2+y^2*z^2+z^2*x^2-x*y*z",
+         {{-0.25, -0.5, -0.75}, {1, 2, 3}},
+         0.5,
+         "Steiner's surface: a multiple root exactly where the restriction is expanded"},
+        {"x^2*y^2+y^2*z^2+z^2*x^2-x*y*z",
+         {{-0.5, -0.5, -0.5}, {1, 1, 1}},
+         1.0,
+         "Steiner's triple point: Sturm's refinement stopped 2e-6 short"},
+        {nested.c_str(),
+         {{0.5, 0, -2}, {0, 0, 1}},
+         4.0,
+         "ten nested spheres (degree 20), tangent to the inner one mid-ray"},
+        {"4*(x^2+y^2+z^2)+16*x*y*z-1",
+         {{-0.5, -0.5, 0.5}, {1, 1, 0}},
+         1.0,
+         "the line through two of Cayley's nodes lies in the surface: a hit at once"},
+    };
+    for (const Probe& probe : probes) {
+        SCOPED_TRACE(probe.why);
+        const algebra::CompiledPolynomial f = algebra::compile_surface(probe.equation);
+        const RootResult sturm =
+            SurfaceTracer(f, TraceMethod::sturm, 2.0).first_hit(probe.ray, {0.0, probe.t_max});
+        const RootResult exact =
+            SurfaceTracer(f, TraceMethod::exact, 2.0).first_hit(probe.ray, {0.0, probe.t_max});
+        ASSERT_EQ(exact.status, RootStatus::hit);
+        ASSERT_EQ(sturm.status, RootStatus::hit);
+        EXPECT_NEAR(sturm.t, exact.t, 1e-6);
+    }
+}
+
 using bench::SuiteSurface;
 
 std::vector<SuiteSurface> suite() {

@@ -119,7 +119,9 @@ inline Screening screen(const RayPolynomial& f, double lo, double hi) {
         all_zero = all_zero && f.c[k] == 0.0;
     }
     if (all_zero) {
-        s.result = unknown("restriction is identically zero", 0);
+        // The segment lies in the surface (a line through two of Cayley's nodes): it meets
+        // the surface at once, as the exact method says (stability atlas, cayley_line).
+        s.result = hit(lo, 0);
         return s;
     }
     const double inverse_radius = 1.0 / std::max({1.0, std::abs(lo), std::abs(hi)});
