@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "render/sphere_tracing.h"
 
@@ -70,8 +71,11 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
         return found;
     }
     found = first_root(finder_, restriction, shifted.lo, shifted.hi);
-    const bool near_multiple = found.reason == kNearCommonFactor;
-    if (found.status != RootStatus::unknown && (near_multiple || found.reason == kSecondOpinion)) {
+    // Reasons are compared as text: two uses of one string literal need not share an address
+    // (they did not in the debug build, and every second opinion was silently skipped).
+    const std::string_view reason = found.reason;
+    const bool near_multiple = reason == kNearCommonFactor;
+    if (found.status != RootStatus::unknown && (near_multiple || reason == kSecondOpinion)) {
         // Multiple or very close roots: Laguerre with deflation separates what the Sturm
         // chain merged (the stability atlas' near-double roots); the earlier hit wins.
         const RootResult second =
