@@ -98,6 +98,58 @@ double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
     return std::max(total - startup, 1e-6);
 }
 
+// A method with one of its settings: the sphere-tracing methods are also run with their
+// tolerance 100× looser and 100× tighter than the default (issue 6: steps against tolerance).
+struct Setting {
+    render::TraceMethod method;
+    std::string name;  // "default" or "tol=1e-05"
+    double factor;     // scales the method's tolerances
+    double tolerance;  // relative to the clip radius; 0 for the root finders
+};
+
+std::vector<Setting> settings_of(const std::vector<render::TraceMethod>& methods) {
+    std::vector<Setting> settings;
+    for (render::TraceMethod m : methods) {
+        const bool gradient = m == render::TraceMethod::sphere_gradient;
+        const bool lipschitz = m == render::TraceMethod::sphere_lipschitz;
+        if (!gradient && !lipschitz) {
+            settings.push_back({m, "default", 1.0, 0.0});
+            continue;
+        }
+        const double base = gradient ? 1e-7 : 1e-9;  // surface_tracer.cpp's tolerances
+        for (const double factor : {1.0, 100.0, 0.01}) {
+            char name[32];
+            std::snprintf(name, sizeof name, "tol=%.0e", base * factor);
+            settings.push_back({m, factor == 1.0 ? "default" : name, factor, base * factor});
+        }
+    }
+    return settings;
+}
+
+// A grey image of the hits: |n·l| for a fixed light, 0 for a miss; the benchmark's image
+// difference is the RMS of two such images in 8-bit levels.
+std::vector<double> shade_image(const algebra::CompiledPolynomial& f, const render::Camera& camera,
+                                const render::PrimaryRays& rays, int size) {
+    const render::Vec3 light = glm::normalize(render::Vec3{-0.4, 0.8, 0.6});
+    std::vector<double> shade(rays.hits.size(), 0.0);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y) * size + x;
+            if (rays.hits[p].status != render::RootStatus::hit) {
+                continue;
+            }
+            const render::Ray ray = camera.ray(x + 0.5, y + 0.5);
+            const algebra::ValueGradient vg =
+                f.value_gradient(render::to_point(ray.at(rays.hits[p].t)));
+            const render::Vec3 n = render::to_vec(vg.gradient);
+            const double length = glm::length(n);
+            shade[p] =
+                length > 0.0 && std::isfinite(length) ? std::abs(glm::dot(n, light)) / length : 0.5;
+        }
+    }
+    return shade;
+}
+
 }  // namespace
 
 int run_render_bench(const RenderBenchArgs& args) {
@@ -128,13 +180,13 @@ int run_render_bench(const RenderBenchArgs& args) {
     }
     const bool with_surf = args.surf != "off" && on_path(args.surf);
     if (args.csv) {
-        std::cout << "case,degree,method,rays,seconds,rays_per_second,work_per_ray,wrong_rays,"
-                     "wrong_share,unknown_rays,max_depth_error,mean_depth_error,render_seconds,"
-                     "surf_seconds\n";
+        std::cout << "case,degree,method,setting,tolerance,rays,seconds,rays_per_second,"
+                     "work_per_ray,wrong_rays,wrong_share,unknown_rays,max_depth_error,"
+                     "mean_depth_error,image_rms,render_seconds,surf_seconds\n";
     } else {
-        std::printf("%-18s %3s %-17s %10s %9s %8s %8s %11s %11s %9s %9s\n", "case", "deg", "method",
-                    "rays/s", "work/ray", "wrong", "wrong %", "max err", "mean err", "render s",
-                    "surf s");
+        std::printf("%-18s %3s %-25s %10s %9s %8s %8s %11s %11s %7s %9s %9s\n", "case", "deg",
+                    "method", "rays/s", "work/ray", "wrong", "wrong %", "max err", "mean err",
+                    "img rms", "render s", "surf s");
     }
     for (const SuiteSurface& s : suite) {
         const algebra::CompiledPolynomial f = algebra::compile_surface(s.equation);
@@ -161,13 +213,15 @@ int run_render_bench(const RenderBenchArgs& args) {
         } while (render_seconds < args.min_seconds && render_runs < 50);
         render_seconds /= render_runs;
         const double tolerance = 1e-6 * s.clip_radius;
-        for (render::TraceMethod method : methods) {
+        const std::vector<double> reference_shade = shade_image(f, camera, reference, args.size);
+        for (const Setting& setting : settings_of(methods)) {
+            const render::TraceMethod method = setting.method;
             render::PrimaryRays traced;
             double total = 0.0;
             int runs = 0;
             do {
                 traced = render::trace_primary_rays(f, region, camera, args.size, args.size, method,
-                                                    args.threads);
+                                                    args.threads, setting.factor);
                 total += traced.seconds;
                 ++runs;
             } while (total < args.min_seconds && runs < 50);
@@ -199,18 +253,30 @@ int run_render_bench(const RenderBenchArgs& args) {
             }
             const double rays = static_cast<double>(traced.hits.size());
             const double mean_error = compared > 0 ? sum_error / compared : 0.0;
+            const std::vector<double> shade = shade_image(f, camera, traced, args.size);
+            double square_sum = 0.0;
+            for (std::size_t p = 0; p < shade.size(); ++p) {
+                const double d = 255.0 * (shade[p] - reference_shade[p]);
+                square_sum += d * d;
+            }
+            const double image_rms = std::sqrt(square_sum / static_cast<double>(shade.size()));
             if (args.csv) {
                 std::cout << s.name << "," << f.degree() << "," << render::to_string(method) << ","
-                          << traced.hits.size() << "," << seconds << "," << rays / seconds << ","
-                          << work / rays << "," << wrong << "," << wrong / rays << "," << unknown
-                          << "," << max_error << "," << mean_error << "," << render_seconds << ","
+                          << setting.name << "," << setting.tolerance << "," << traced.hits.size()
+                          << "," << seconds << "," << rays / seconds << "," << work / rays << ","
+                          << wrong << "," << wrong / rays << "," << unknown << "," << max_error
+                          << "," << mean_error << "," << image_rms << "," << render_seconds << ","
                           << surf_seconds << "\n";
             } else {
+                std::string label(render::to_string(method));
+                if (setting.name != "default") {
+                    label += " ";
+                    label += setting.name;
+                }
                 std::printf(
-                    "%-18s %3d %-17s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %9.4f %9s\n",
-                    s.name.c_str(), f.degree(), std::string(render::to_string(method)).c_str(),
-                    rays / seconds, work / rays, wrong, 100.0 * wrong / rays, max_error, mean_error,
-                    render_seconds,
+                    "%-18s %3d %-25s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %7.2f %9.4f %9s\n",
+                    s.name.c_str(), f.degree(), label.c_str(), rays / seconds, work / rays, wrong,
+                    100.0 * wrong / rays, max_error, mean_error, image_rms, render_seconds,
                     surf_seconds > 0 ? std::to_string(surf_seconds).substr(0, 6).c_str() : "-");
             }
             std::cout.flush();

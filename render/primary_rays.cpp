@@ -12,14 +12,15 @@ namespace locus::render {
 
 PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipRegion& region,
                                const Camera& camera, int width, int height, TraceMethod method,
-                               int threads) {
+                               int threads, double tolerance_factor) {
     const auto start = std::chrono::steady_clock::now();
     PrimaryRays result;
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     result.hits.resize(pixels);
     result.ray_lengths.resize(pixels);
     const double scale = bounding_sphere(region).radius;
-    const SurfaceTracer tracer(f, method, scale);
+    // SurfaceTracer's scale sets only the sphere-tracing tolerances.
+    const SurfaceTracer tracer(f, method, scale * tolerance_factor);
     const bool uses_family = method != TraceMethod::sphere_gradient &&
                              method != TraceMethod::exact && f.degree() <= kMaxFamilyDegree;
     const RayFamily family(f, camera, bounding_sphere(region).center, width);

@@ -17,8 +17,10 @@ struct PrimaryRays {
     double seconds = 0.0;             // wall time, family expansion included
 };
 
+// `tolerance_factor` scales the sphere-tracing tolerances (1e-7 and 1e-9 × clip radius by
+// default; the benchmark's tolerance settings); the root finders ignore it.
 PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipRegion& region,
                                const Camera& camera, int width, int height, TraceMethod method,
-                               int threads);
+                               int threads, double tolerance_factor = 1.0);
 
 }  // namespace locus::render
