@@ -39,11 +39,11 @@ struct RayPolynomial {
 enum class RootStatus { hit, miss, unknown };
 
 // Set by Sturm as the `reason` of a hit or miss that deserves a second opinion (see sturm.cpp):
-// its chain ended at a near-common factor of F and F' (multiple or very close roots), or had a
-// suspiciously small remainder, or the degree is high.
+// its chain ended at a near-common factor of F and F' (multiple or very close roots), or the
+// degree is 16 or more.
 inline constexpr const char* kNearCommonFactor =
     "near-common factor of F and F' (multiple or very close roots)";
-inline constexpr const char* kSecondOpinion = "small remainder in the chain, or high degree";
+inline constexpr const char* kSecondOpinion = "high degree";
 
 struct RootResult {
     RootStatus status = RootStatus::miss;
