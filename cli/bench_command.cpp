@@ -3,9 +3,7 @@
 // Each side is repeated until 0.2 s have passed (at most 20 runs) and the mean run is reported,
 // so that millisecond cases are not lost in timer noise. Singular's time is measured inside
 // Singular with `rtimer` (microsecond ticks), so its start-up is not counted.
-#include <signal.h>    // for kill
-#include <sys/wait.h>  // for waitpid
-#include <unistd.h>    // for getpid, fork
+#include <unistd.h>  // for getpid
 
 #include <chrono>
 #include <cmath>
@@ -167,39 +165,6 @@ std::vector<std::string> suite_cases(const BenchArgs& args, const std::string& d
 // Gröbner when it finishes within 0.2 s and the resultant route after that, as in
 // `locus implicitize`.
 //
-// Seconds `work` takes in a forked child, or −1 when it fails or runs past `limit_seconds`
-// (the child is then killed). For library calls that have no deadline of their own.
-template <class Work>
-double timed_in_child(double limit_seconds, Work&& work) {
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t child = fork();
-    if (child == 0) {
-        try {
-            work();
-        } catch (...) {
-            _exit(1);
-        }
-        _exit(0);
-    }
-    if (child < 0) {
-        return -1.0;
-    }
-    int status = 0;
-    while (waitpid(child, &status, WNOHANG) == 0) {
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (elapsed > limit_seconds) {
-            kill(child, SIGKILL);
-            waitpid(child, &status, 0);
-            return -1.0;
-        }
-        usleep(1000);
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? seconds : -1.0;
-}
-
 int run_implicit_bench(const BenchArgs& args) {
     const std::string dir = args.data_dir + "/implicit";
     const std::vector<std::string> cases = suite_cases(args, dir);
@@ -237,8 +202,14 @@ int run_implicit_bench(const BenchArgs& args) {
             timed([&] { implicit::implicitize_by_interpolation(map); });
         // FLINT's resultants cannot be interrupted (the bicubic patch runs for many minutes):
         // time them in a child process that is killed at the limit.
-        const double resultant_seconds =
-            timed_in_child(args.limit_seconds, [&] { implicit::implicitize_by_resultant(map); });
+        const double resultant_seconds = [&] {
+            // In a child process: FLINT's resultants have no deadline of their own.
+            const ChildOutcome outcome = run_in_child(args.limit_seconds, [&] {
+                implicit::implicitize_by_resultant(map);
+                return std::string();
+            });
+            return outcome.text ? outcome.seconds : -1.0;
+        }();
         options.deadline = deadline_after(args.limit_seconds);
         const double groebner_seconds = timed([&] { implicit::implicitize(map, options); });
         const double singular_seconds =

@@ -1,6 +1,11 @@
 #include "cli/command_support.h"
 
-#include <unistd.h>  // for isatty
+#include <signal.h>      // for kill
+#include <sys/select.h>  // for select
+#include <sys/wait.h>    // for waitpid
+#include <unistd.h>      // for isatty, fork, pipe
+
+#include <chrono>
 
 #include <cstdio>
 #include <cstdlib>
@@ -106,6 +111,83 @@ bool on_path(const std::string& program) {
         }
     }
     return false;
+}
+
+ChildOutcome run_in_child(double limit_seconds, const std::function<std::string()>& work) {
+    ChildOutcome outcome;
+    int channel[2];
+    if (pipe(channel) != 0) {
+        return outcome;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t child = fork();
+    if (child == 0) {
+        close(channel[0]);
+        int code = 1;
+        try {
+            const std::string text = work();
+            std::size_t written = 0;
+            while (written < text.size()) {
+                const ssize_t n = write(channel[1], text.data() + written, text.size() - written);
+                if (n <= 0) {
+                    break;
+                }
+                written += static_cast<std::size_t>(n);
+            }
+            code = written == text.size() ? 0 : 1;
+        } catch (...) {
+            code = 1;
+        }
+        close(channel[1]);
+        _exit(code);
+    }
+    close(channel[1]);
+    if (child < 0) {
+        close(channel[0]);
+        return outcome;
+    }
+    // Read while waiting: a child blocked on a full pipe would otherwise never finish.
+    std::string text;
+    char buffer[4096];
+    int status = 0;
+    bool end_of_text = false, exited = false;
+    while (!(end_of_text && exited)) {
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (elapsed > limit_seconds) {
+            kill(child, SIGKILL);
+            waitpid(child, &status, 0);
+            close(channel[0]);
+            outcome.timed_out = true;
+            return outcome;
+        }
+        if (!end_of_text) {
+            fd_set readable;
+            FD_ZERO(&readable);
+            FD_SET(channel[0], &readable);
+            timeval wait{0, 1000};
+            if (select(channel[0] + 1, &readable, nullptr, nullptr, &wait) > 0) {
+                const ssize_t n = read(channel[0], buffer, sizeof buffer);
+                if (n > 0) {
+                    text.append(buffer, static_cast<std::size_t>(n));
+                } else {
+                    end_of_text = true;  // the child closed its end
+                }
+            }
+        } else {
+            usleep(1000);
+        }
+        if (!exited && waitpid(child, &status, WNOHANG) == child) {
+            exited = true;
+        }
+    }
+    close(channel[0]);
+    outcome.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        outcome.text = std::move(text);
+    }
+    return outcome;
 }
 
 }  // namespace locus::cli

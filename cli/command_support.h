@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,17 @@ algebra::IdealFile read_ideal(const std::string& path,
 
 // A deadline `seconds` from now, or none for seconds <= 0.
 std::optional<std::chrono::steady_clock::time_point> deadline_after(double seconds);
+
+// Runs `work` in a forked child for library calls that have no deadline of their own (FLINT's
+// resultants): its text comes back through a pipe. Nothing when the child fails or runs past
+// `limit_seconds` (it is then killed; `timed_out` says which), else the text and, in
+// `seconds`, the time it took.
+struct ChildOutcome {
+    std::optional<std::string> text;
+    bool timed_out = false;
+    double seconds = 0.0;
+};
+ChildOutcome run_in_child(double limit_seconds, const std::function<std::string()>& work);
 
 // A progress callback that redraws one line on standard error when it is a terminal (and does
 // nothing otherwise), at most ten times a second; finish_progress() clears the line.

@@ -63,6 +63,44 @@ int run_implicitize(const ImplicitizeArgs& args) {
         if (!fallback_reason.empty()) {
             std::fprintf(stderr, "faster routes gave up (%s)\n", fallback_reason.c_str());
         }
+    } else if (args.method == "resultant" && args.timeout_seconds > 0) {
+        // FLINT's resultants cannot be interrupted: under --timeout the route runs in a
+        // child process that is killed at the deadline, and its equation comes back as text.
+        // The first character tells success ('=') or which error ('I' input, 'E' other).
+        const ChildOutcome outcome = run_in_child(args.timeout_seconds, [&]() -> std::string {
+            try {
+                return "=" + algebra::to_string(*implicit::implicitize_by_resultant(map).equation);
+            } catch (const InputError& e) {
+                return std::string("I") + e.what();
+            } catch (const Error& e) {
+                return std::string("E") + e.what();
+            }
+        });
+        if (outcome.timed_out) {
+            finish_progress();
+            char message[96];
+            std::snprintf(message, sizeof message,
+                          "timeout: the resultant route stopped after %g s", args.timeout_seconds);
+            throw CommandFailure(exit_timeout, message);
+        }
+        if (!outcome.text || outcome.text->empty()) {
+            throw Error("the resultant route failed in its child process");
+        }
+        const std::string body = outcome.text->substr(1);
+        if ((*outcome.text)[0] == 'I') {
+            throw CommandFailure(exit_input, body);
+        }
+        if ((*outcome.text)[0] == 'E') {
+            throw Error(body);
+        }
+        implicit::ImplicitResult r;
+        r.method = "resultant";
+        r.ring = algebra::PolyRing::make(map.coordinates,
+                                         algebra::MonomialOrder::grevlex(map.coordinates.size()));
+        r.equation = algebra::parse_polynomial(body, r.ring);
+        r.generators = {*r.equation};
+        r.stats.seconds = outcome.seconds;
+        found = std::move(r);
     } else if (args.method == "resultant") {
         found = implicit::implicitize_by_resultant(map);
     } else if (args.method == "interpolate") {

@@ -118,10 +118,14 @@ expect "render: unknown node type names the node" 2 "badtree.toml: line 4, colum
     "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
 expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
     "$locus" bench sdf --size 16 --min-seconds 0 --csv
+expect "resultant honours --timeout" 3 "timeout: the resultant route stopped after 1 s" -- \
+    "$locus" implicitize bench/data/implicit/bezier_triangle3.param --method resultant --timeout 1
+expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z" -- \
+    "$locus" implicitize bench/data/implicit/steiner_roman.param --method resultant --timeout 20
 expect "trace prints hits and misses" 0 "" -- bash -c \
     "printf '0 0 5 0 0 -1\n3 3 3 1 0 0\n' | \"$locus\" trace 'x^2+y^2+z^2-1' --method exact | diff - <(printf '4\nmiss\n')"
 expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a decimal number" -- \
     bash -c "printf '0 0 5 0 0 -1\n0 0 5 x 0 -1\n' | \"$locus\" trace 'x^2+y^2+z^2-1'"
 
-echo "$((53 - failures)) passed, $failures failed"
+echo "$((55 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]
