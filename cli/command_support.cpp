@@ -1,10 +1,12 @@
 #include "cli/command_support.h"
 
+#include <fcntl.h>       // for O_CLOEXEC
 #include <signal.h>      // for kill
 #include <sys/select.h>  // for select
 #include <sys/wait.h>    // for waitpid
 #include <unistd.h>      // for isatty, fork, pipe
 
+#include <cerrno>
 #include <chrono>
 
 #include <cstdio>
@@ -116,7 +118,7 @@ bool on_path(const std::string& program) {
 ChildOutcome run_in_child(double limit_seconds, const std::function<std::string()>& work) {
     ChildOutcome outcome;
     int channel[2];
-    if (pipe(channel) != 0) {
+    if (pipe2(channel, O_CLOEXEC) != 0) {
         return outcome;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -154,7 +156,9 @@ ChildOutcome run_in_child(double limit_seconds, const std::function<std::string(
     while (!(end_of_text && exited)) {
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (elapsed > limit_seconds) {
+        // A limit of 0 or less means none, as for deadline_after. A child already reaped is
+        // never killed (its pid may belong to another process by now).
+        if (limit_seconds > 0.0 && elapsed > limit_seconds && !exited) {
             kill(child, SIGKILL);
             waitpid(child, &status, 0);
             close(channel[0]);
@@ -170,8 +174,8 @@ ChildOutcome run_in_child(double limit_seconds, const std::function<std::string(
                 const ssize_t n = read(channel[0], buffer, sizeof buffer);
                 if (n > 0) {
                     text.append(buffer, static_cast<std::size_t>(n));
-                } else {
-                    end_of_text = true;  // the child closed its end
+                } else if (n == 0 || (errno != EINTR && errno != EAGAIN)) {
+                    end_of_text = true;  // the child closed its end (or the pipe failed)
                 }
             }
         } else {

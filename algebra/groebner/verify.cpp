@@ -1,6 +1,7 @@
 #include "algebra/groebner/verify.h"
 
 #include "algebra/division.h"
+#include "algebra/error.h"
 #include "algebra/groebner/pair_criteria.h"
 #include "algebra/groebner/reduction.h"
 #include "algebra/print.h"
@@ -61,7 +62,8 @@ BasisCheck check_groebner_basis(std::span<const Polynomial> basis,
 }
 
 BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
-                                  std::span<const Polynomial> generators) {
+                                  std::span<const Polynomial> generators,
+                                  std::optional<std::chrono::steady_clock::time_point> deadline) {
     BasisCheck check;
     if (basis.empty()) {
         for (const Polynomial& g : generators) {
@@ -85,29 +87,36 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         detail::gebauer_moller_update(elements, pairs, elements.size() - 1, layout, counts);
     }
     detail::Reducer reducer(layout);
+    reducer.set_deadline(deadline);
     detail::ReductionCounts steps;
-    for (std::size_t i = 0; i < generators.size(); ++i) {
-        ++check.generators_checked;
-        if (generators[i].is_zero()) {
-            continue;
+    try {
+        for (std::size_t i = 0; i < generators.size(); ++i) {
+            ++check.generators_checked;
+            if (generators[i].is_zero()) {
+                continue;
+            }
+            if (!reducer
+                     .reduce(detail::to_integer_polynomial(generators[i]), elements, steps, false)
+                     .empty()) {
+                check.ok = false;
+                check.failure = "generator " + std::to_string(i + 1) + " does not reduce to zero";
+                return check;
+            }
         }
-        if (!reducer.reduce(detail::to_integer_polynomial(generators[i]), elements, steps, false)
-                 .empty()) {
-            check.ok = false;
-            check.failure = "generator " + std::to_string(i + 1) + " does not reduce to zero";
-            return check;
+        for (const detail::CriticalPair& pair : pairs) {
+            ++check.pairs_checked;
+            const detail::IntegerPolynomial s = reducer.s_polynomial(
+                elements[pair.first].poly, elements[pair.second].poly, pair.lcm.data(), pair.sugar);
+            if (!reducer.reduce(s, elements, steps, false).empty()) {
+                check.ok = false;
+                check.failure = "S-polynomial of elements " + std::to_string(pair.first + 1) +
+                                " and " + std::to_string(pair.second + 1) +
+                                " does not reduce to zero";
+                return check;
+            }
         }
-    }
-    for (const detail::CriticalPair& pair : pairs) {
-        ++check.pairs_checked;
-        const detail::IntegerPolynomial s = reducer.s_polynomial(
-            elements[pair.first].poly, elements[pair.second].poly, pair.lcm.data(), pair.sugar);
-        if (!reducer.reduce(s, elements, steps, false).empty()) {
-            check.ok = false;
-            check.failure = "S-polynomial of elements " + std::to_string(pair.first + 1) + " and " +
-                            std::to_string(pair.second + 1) + " does not reduce to zero";
-            return check;
-        }
+    } catch (const detail::ReductionInterrupted&) {
+        throw Timeout("certification of the modular result");
     }
     return check;
 }

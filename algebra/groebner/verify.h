@@ -6,6 +6,8 @@
 // reduces to zero; pairs with coprime leading monomials are skipped (CLO ch. 2 §9, Prop. 4).
 #pragma once
 
+#include <chrono>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -35,8 +37,10 @@ bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polyno
 // only far enough to decide zero. It certifies the results of the multi-modular algorithm,
 // whose F4 code shares nothing with this reducer. On cyclic-6 it takes 0.05 s where the
 // rational check takes 0.8 s.
-BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
-                                  std::span<const Polynomial> generators);
+// Throws Timeout once `deadline` passes (checked at every reduction step).
+BasisCheck certify_groebner_basis(
+    std::span<const Polynomial> basis, std::span<const Polynomial> generators,
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 // Monic, and no monomial of any element is divisible by another element's leading monomial.
 bool is_reduced(std::span<const Polynomial> basis);
 // S-polynomial over Q: (lcm/lt(f))·f − (lcm/lt(g))·g.

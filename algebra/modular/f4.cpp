@@ -77,9 +77,10 @@ struct Element {
 };
 
 // `degree` is the sugar of the S-polynomial (Giovini et al. 1991): the degree it would have
-// if the input were homogenized. Selecting by it rather than by the lcm's degree keeps F4
-// from running off into high degrees under lex and other non-graded orders, where the lcm's
-// degree says little about the work.
+// if the input were homogenized, measured in the order's first weight row as buchberger.cpp
+// does (total degree for grevlex, the eliminated block's degree for elim). Selecting by it rather
+// than by the lcm's degree keeps F4 from running off into high degrees under lex and other
+// non-graded orders, where the lcm's degree says little about the work.
 struct Pair {
     std::size_t first, second;
     std::vector<std::uint64_t> lcm;
@@ -117,6 +118,9 @@ class F4Engine {
         const auto& first_row = layout.order().matrix_rows().front();
         batch_ =
             std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
+        // Under elimination and matrix orders least lcm alone does not finish (an elim(x,y)
+        // case of the review ran past 60 s; buchberger.cpp found the same): least sugar first.
+        by_lcm_only_ = layout.order().kind() == MonomialOrder::Kind::lex;
     }
 
     std::vector<ModularPolynomial> run(std::span<const ModularPolynomial> generators) {
@@ -124,7 +128,7 @@ class F4Engine {
             if (!g.is_zero()) {
                 std::uint32_t degree = 0;
                 for (std::size_t i = 0; i < g.size(); ++i) {
-                    degree = std::max(degree, layout_.total_degree(g.monomial(i, words_)));
+                    degree = std::max(degree, layout_.leading_weight(g.monomial(i, words_)));
                 }
                 add_element(monic(g), degree);
             }
@@ -158,9 +162,9 @@ class F4Engine {
             }
             Pair pair{g, h, std::vector<std::uint64_t>(words_), 0};
             layout_.lcm(lead(g), lead(h), pair.lcm.data());
-            const std::uint32_t lcm_degree = layout_.total_degree(pair.lcm.data());
-            pair.degree = std::max(basis_[g].sugar + lcm_degree - layout_.total_degree(lead(g)),
-                                   sugar + lcm_degree - layout_.total_degree(lead(h)));
+            const std::uint32_t lcm_degree = layout_.leading_weight(pair.lcm.data());
+            pair.degree = std::max(basis_[g].sugar + lcm_degree - layout_.leading_weight(lead(g)),
+                                   sugar + lcm_degree - layout_.leading_weight(lead(h)));
             fresh.push_back(std::move(pair));
             ++stats_.pairs_created;
         }
@@ -375,8 +379,12 @@ class F4Engine {
         if (!batch_) {
             std::size_t best = pairs_.size();
             for (std::size_t i = 0; i < pairs_.size(); ++i) {
-                if (best == pairs_.size() ||
-                    layout_.compare(pairs_[i].lcm.data(), pairs_[best].lcm.data()) < 0) {
+                const bool better =
+                    best == pairs_.size() ||
+                    (!by_lcm_only_ && pairs_[i].degree != pairs_[best].degree
+                         ? pairs_[i].degree < pairs_[best].degree
+                         : layout_.compare(pairs_[i].lcm.data(), pairs_[best].lcm.data()) < 0);
+                if (better) {
                     best = i;
                 }
             }
@@ -456,15 +464,6 @@ class F4Engine {
                 acc[row.columns[k]] = row.coefficients[k];
             }
             SparseRow reduced = reduce_dense(acc, row.columns.front(), pivot_of_column, pivots);
-            if (reduced.columns.empty()) {
-                ++stats_.zero_rows;
-                continue;
-            }
-            // Against the rows found so far in this step: they are pivots too.
-            for (std::size_t k = 0; k < reduced.columns.size(); ++k) {
-                acc[reduced.columns[k]] = reduced.coefficients[k];
-            }
-            reduced = reduce_dense(acc, reduced.columns.front(), pivot_of_column, pivots);
             if (reduced.columns.empty()) {
                 ++stats_.zero_rows;
                 continue;
@@ -576,6 +575,7 @@ class F4Engine {
     std::vector<Pair> pairs_;
     std::vector<std::uint64_t> scratch_ = std::vector<std::uint64_t>(words_);
     bool batch_ = true;
+    bool by_lcm_only_ = false;
 };
 
 }  // namespace

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <string>
+
+#include "algebra/error.h"
 
 namespace locus::algebra::modular {
 
@@ -164,11 +167,10 @@ class NormalForms {
 
 }  // namespace
 
-std::optional<std::vector<ModularPolynomial>> fglm(const std::vector<ModularPolynomial>& basis,
-                                                   const MonomialLayout& from,
-                                                   const MonomialLayout& to,
-                                                   const PrimeField& field,
-                                                   std::size_t max_dimension) {
+std::optional<std::vector<ModularPolynomial>> fglm(
+    const std::vector<ModularPolynomial>& basis, const MonomialLayout& from,
+    const MonomialLayout& to, const PrimeField& field, std::size_t max_dimension,
+    std::optional<std::chrono::steady_clock::time_point> deadline) {
     NormalForms forms(basis, from, field);
     if (basis.empty() || !forms.enumerate(max_dimension)) {
         return std::nullopt;
@@ -203,6 +205,9 @@ std::optional<std::vector<ModularPolynomial>> fglm(const std::vector<ModularPoly
     std::vector<Exponents> new_leads;
     std::vector<ModularPolynomial> out;
     while (!candidates.empty()) {
+        if (deadline && std::chrono::steady_clock::now() > *deadline) {
+            throw Timeout("FGLM modulo " + std::to_string(field.p));
+        }
         const Candidate c = *candidates.begin();
         candidates.erase(candidates.begin());
         if (std::any_of(new_leads.begin(), new_leads.end(),

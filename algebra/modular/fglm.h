@@ -5,6 +5,7 @@
 // the conversion is linear algebra on D-vectors of normal forms.
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <vector>
 
@@ -15,10 +16,9 @@ namespace locus::algebra::modular {
 // `basis`: the monic reduced basis under `from` (terms descending under it). Returns the monic
 // reduced basis under `to`, sorted by ascending leading monomial, or nothing when the ideal is
 // not zero-dimensional or its quotient has more than `max_dimension` standard monomials.
-std::optional<std::vector<ModularPolynomial>> fglm(const std::vector<ModularPolynomial>& basis,
-                                                   const MonomialLayout& from,
-                                                   const MonomialLayout& to,
-                                                   const PrimeField& field,
-                                                   std::size_t max_dimension = 3000);
+std::optional<std::vector<ModularPolynomial>> fglm(
+    const std::vector<ModularPolynomial>& basis, const MonomialLayout& from,
+    const MonomialLayout& to, const PrimeField& field, std::size_t max_dimension = 3000,
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 }  // namespace locus::algebra::modular

@@ -1,6 +1,7 @@
 #include "algebra/modular/modular_groebner.h"
 
 #include <algorithm>
+#include <random>
 
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
@@ -148,8 +149,8 @@ bool agrees_modulo(const std::vector<Polynomial>& candidate,
     return true;
 }
 
-// Reconstruct after 1, 2, 3, 4, 6, 8, 12, 16, … primes: a failed reconstruction costs as much
-// as a prime, so the attempts thin out geometrically.
+// Reconstruct after 1, 2, 3, 4, 6, 9, 13, 19, … primes (×1.5 from 4 on): a failed reconstruction
+// costs as much as a prime, so the attempts thin out geometrically.
 bool worth_reconstructing(std::size_t primes) {
     std::size_t next = 1;
     while (next < primes) {
@@ -158,9 +159,16 @@ bool worth_reconstructing(std::size_t primes) {
     return next == primes;
 }
 
+// Primes below 2³¹ from a random starting point: with a fixed sequence an input could be made
+// (a coefficient equal to the product of the first two primes, found by the review) on which
+// two unlucky primes agree with each other; the majority and the test prime then accept a
+// wrong ideal, which the certification, checking only one inclusion, cannot reject.
 class PrimeSequence {
   public:
-    explicit PrimeSequence(const std::vector<std::uint32_t>& forced) : forced_(forced) {}
+    explicit PrimeSequence(const std::vector<std::uint32_t>& forced) : forced_(forced) {
+        std::random_device entropy;
+        last_ = (1u << 31) - (entropy() % (1u << 28));
+    }
     // Never the same prime twice: a repeated prime would agree with itself.
     std::uint32_t next() {
         while (position_ < forced_.size()) {
@@ -229,8 +237,10 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         std::vector<ModularPolynomial> reduced;
         bool usable = true;
         for (const Polynomial& f : inputs) {
+            // A prime that divides a leading coefficient changes the input's leading monomials
+            // (and a product of two such primes could make both agree on a wrong ideal).
             std::optional<ModularPolynomial> g = modular::reduce_modulo(f, field);
-            if (!g) {
+            if (!g || fmpz_fdiv_ui(fmpq_numref(f.leading_coefficient().get()), p) == 0) {
                 usable = false;
                 break;
             }
@@ -250,7 +260,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
             }
             converted = modular::fglm(
                 modular::f4(reduced_grevlex, grevlex_ring->layout(), field, f4_options, &f4_stats),
-                grevlex_ring->layout(), layout, field);
+                grevlex_ring->layout(), layout, field, 3000, options.deadline);
             via_grevlex = converted.has_value();
             if (converted) {
                 s.fglm = true;
@@ -272,13 +282,22 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
             groups.push_back({signature, {}, Integer(1), 0, s.primes_used.size(), std::nullopt});
             group = groups.end() - 1;
         }
-        // The candidate of this group, built from other primes, meets a fresh prime.
-        if (group->candidate && agrees_modulo(*group->candidate, basis, field)) {
+        // The candidate of this group, built from other primes, meets a fresh prime; it is
+        // accepted only from a group at least as large as every other (the majority vote).
+        std::size_t largest_other = 0;
+        for (const Group& g : groups) {
+            if (&g != &*group) {
+                largest_other = std::max(largest_other, g.primes);
+            }
+        }
+        if (group->candidate && group->primes + 1 > largest_other &&
+            agrees_modulo(*group->candidate, basis, field)) {
             s.lift_seconds += seconds_since(lift_start);
             std::vector<Polynomial> candidate = *group->candidate;
             if (options.certify) {
                 const auto certify_start = Clock::now();
-                const BasisCheck check = certify_groebner_basis(candidate, inputs);
+                const BasisCheck check =
+                    certify_groebner_basis(candidate, inputs, options.deadline);
                 s.certify_seconds += seconds_since(certify_start);
                 if (!check.ok) {
                     group->candidate.reset();  // stable but wrong: lift with more primes

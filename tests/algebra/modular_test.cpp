@@ -112,6 +112,49 @@ TEST(Modular, AutomaticAgreesWithBuchbergerOnTheBenchSuite) {
     }
 }
 
+// Regressions from the review of the modular code.
+TEST(Modular, ReviewRegressions) {
+    // A coefficient equal to the product of the two largest primes below 2^31: with a fixed
+    // prime sequence both primes gave the unit ideal, agreed, and "1" passed certification.
+    const IdealFile product =
+        parse_ideal_file("vars: x,y\norder: grevlex\nx^2+4611685975477714963*y\nx*y-1\n");
+    EXPECT_EQ(format_polynomials(modular_groebner(product.generators).basis, *product.ring,
+                                 OutputFormat::normalized),
+              format_polynomials(groebner(product.generators).basis, *product.ring,
+                                 OutputFormat::normalized));
+    // The same primes forced: the leading coefficient they divide sets them aside.
+    const IdealFile lead = parse_ideal_file("vars: x\norder: grevlex\n4611685975477714963*x-1\n");
+    ModularOptions forced;
+    forced.primes = {2147483647u, 2147483629u};
+    ModularStats stats;
+    EXPECT_EQ(format_polynomials(modular_groebner(lead.generators, forced, &stats).basis,
+                                 *lead.ring, OutputFormat::normalized),
+              "x-1/4611685975477714963\n");
+    EXPECT_GE(stats.unlucky_primes, 2u);
+    // Under an elimination order, F4 one pair at a time by least lcm did not finish; by least
+    // first-row sugar it takes milliseconds.
+    const IdealFile elim = parse_ideal_file(
+        "vars: x,y,z,w\norder: elim(x,y)\n2*w^3+x^2*z^3\n"
+        "-15*x^2*z^3*w^3+57*x^2*z^2*w^3+x*y^3*z-y*z^3\n1/7*x^2*y^2*w\n"
+        "y^3*z*w+2*x*y^3*z^3*w+61*z+7*w^3\n");
+    EXPECT_EQ(
+        format_polynomials(modular_groebner(elim.generators).basis, *elim.ring,
+                           OutputFormat::normalized),
+        format_polynomials(groebner(elim.generators).basis, *elim.ring, OutputFormat::normalized));
+    // Certification and FGLM honour the deadline.
+    const IdealFile katsura =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura5.ideal"));
+    const GroebnerResult r = modular_groebner(katsura.generators);
+    EXPECT_THROW(certify_groebner_basis(r.basis, katsura.generators,
+                                        std::chrono::steady_clock::now() - std::chrono::seconds(1)),
+                 Timeout);
+    ModularOptions past;
+    past.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    const IdealFile lex =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura5_lex.ideal"));
+    EXPECT_THROW(modular_groebner(lex.generators, past), Timeout);
+}
+
 TEST(Modular, UnluckyPrimeIsDetectedAndSetAside) {
     // Modulo p the first generator loses its leading term x and the ideal becomes the unit
     // ideal: leading monomials {1} against {x, y²} over Q.
