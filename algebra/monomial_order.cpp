@@ -183,6 +183,11 @@ MonomialOrder MonomialOrder::matrix(std::vector<std::vector<std::int64_t>> rows)
     return o;
 }
 
+bool MonomialOrder::is_degree_order() const {
+    const auto& first_row = matrix_.front();
+    return std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
+}
+
 int MonomialOrder::compare(std::span<const std::uint32_t> a,
                            std::span<const std::uint32_t> b) const {
     for (const auto& row : matrix_) {

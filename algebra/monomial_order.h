@@ -44,6 +44,9 @@ class MonomialOrder {
     static MonomialOrder matrix(std::vector<std::vector<std::int64_t>> rows);
 
     Kind kind() const { return kind_; }
+    // Every entry of the first weight row positive (grlex, grevlex, positive weights): a
+    // degree order, under which sugar strategies and batched F4 steps pay off.
+    bool is_degree_order() const;
     std::size_t num_vars() const { return num_vars_; }
     const std::vector<std::vector<std::int64_t>>& matrix_rows() const { return matrix_; }
     const std::vector<OrderField>& fields() const { return fields_; }

@@ -119,13 +119,11 @@ int run_sdf_bench(const SdfBenchArgs& args) {
         const render::Camera camera(scene.camera.value_or(render::default_camera(scene)), width,
                                     height);
         int primitives = 0;
-        double scale = 1.0;
         for (const render::sdf::NodePtr& item : items) {
             primitives += item->primitive_count();
-            if (item->bounds().is_finite()) {
-                scale = std::max(scale, glm::length(item->bounds().max - item->bounds().min));
-            }
         }
+        // The renderer's scale, so that the benchmark traces with its tolerances.
+        const double scale = render::sdf::scene_scale(render::sdf::finite_bounds(items));
         const render::sdf::SceneTracer flat(items, scale);
         std::vector<Frame> frames;
         for (const Setting& setting : kSettings) {

@@ -3,13 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
+#include "render/detail/image_rows.h"
 #include "render/ray_family.h"
 #include "render/shading.h"
 
@@ -43,19 +38,11 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         uses_family = uses_family && f.degree() <= kMaxFamilyDegree;
     }
 
-    RenderedImage image;
-    image.width = scene.width;
-    image.height = scene.height;
+    RenderedImage image = detail::blank_image(scene.width, scene.height);
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
-    image.color.assign(3 * pixels, 0.0f);
-    image.depth.assign(pixels, INFINITY);
-    image.normal.assign(3 * pixels, 0.0f);
-    image.work.assign(pixels, 0.0f);
 
     const int k = scene.options.samples;
     std::atomic<long> hits{0}, unknown{0}, primary_work{0};
-    std::atomic<int> rows_done{0};
-    std::mutex progress_mutex;
 
     auto render_row = [&](int y) {
         std::vector<RowExpansion> rows(surfaces.size());
@@ -132,26 +119,9 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         hits += row_hits;
         unknown += row_unknown;
         primary_work += row_work;
-        const int done = ++rows_done;
-        if (execution.progress) {
-            std::unique_lock lock(progress_mutex, std::try_to_lock);
-            if (lock.owns_lock()) {
-                execution.progress(static_cast<double>(done) / scene.height);
-            }
-        }
     };
 
-    const int threads =
-        execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, scene.height, 1),
-                          [&](const tbb::blocked_range<int>& range) {
-                              for (int y = range.begin(); y < range.end(); ++y) {
-                                  render_row(y);
-                              }
-                          });
-    });
+    detail::for_each_row(scene.height, execution, render_row);
     if (stats != nullptr) {
         stats->seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

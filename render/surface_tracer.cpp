@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "render/root_finders/detail/univariate.h"
 #include "render/sphere_tracing.h"
 
 namespace locus::render {
@@ -85,11 +86,7 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
         // to about 1e-6 of the interval), so a triple point keeps the better of the two.
         const double reach = 1e-4 * (shifted.hi - shifted.lo);
         auto magnitude_at = [&](double t) {
-            double value = 0.0;
-            for (int k = restriction.degree; k >= 0; --k) {
-                value = value * t + restriction.c[static_cast<std::size_t>(k)];
-            }
-            return std::abs(value);
+            return std::abs(detail::horner(restriction.c.data(), restriction.degree, t));
         };
         if (second.status == RootStatus::hit &&
             (found.status == RootStatus::miss || second.t < found.t - reach ||

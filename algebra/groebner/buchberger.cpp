@@ -68,9 +68,7 @@ ResolvedSelection resolve_selection(SelectionStrategy requested, const MonomialO
     if (requested != SelectionStrategy::automatic) {
         return {requested, false};
     }
-    const auto& first_row = order.matrix_rows().front();
-    const bool degree_order =
-        std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
+    const bool degree_order = order.is_degree_order();
     if (degree_order) {
         return {SelectionStrategy::sugar, true};
     }

@@ -115,9 +115,7 @@ class F4Engine {
         // time by least sugar still took 1–19 s per prime on two oracle cases, and one pair at a
         // time by least lcm (Buchberger's normal strategy, which buchberger.cpp also uses for
         // lex) takes milliseconds.
-        const auto& first_row = layout.order().matrix_rows().front();
-        batch_ =
-            std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
+        batch_ = layout.order().is_degree_order();
         // Under elimination and matrix orders least lcm alone does not finish (an elim(x,y)
         // case of the review ran past 60 s; buchberger.cpp found the same): least sugar first.
         by_lcm_only_ = layout.order().kind() == MonomialOrder::Kind::lex;

@@ -219,7 +219,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
     // Under lex and other non-degree orders a zero-dimensional ideal is computed under grevlex
     // and converted by FGLM; `via_grevlex` is dropped as soon as the ideal turns out not to be
     // zero-dimensional.
-    bool via_grevlex = !is_degree_order(ring->order());
+    bool via_grevlex = !ring->order().is_degree_order();
     const RingPtr grevlex_ring = ring->with_order(MonomialOrder::grevlex(ring->num_vars()));
     std::vector<Polynomial> grevlex_inputs;
     if (via_grevlex) {
@@ -337,7 +337,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         return groebner(generators, options);
     }
     GroebnerOptions probing = options;
-    const auto probe = is_degree_order(generators.front().ring()->order())
+    const auto probe = generators.front().ring()->order().is_degree_order()
                            ? std::chrono::milliseconds(20)
                            : std::chrono::milliseconds(5);
     const auto probe_end = Clock::now() + probe;
@@ -364,11 +364,6 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         }
         return groebner(generators, options);
     }
-}
-
-bool is_degree_order(const MonomialOrder& order) {
-    const auto& first_row = order.matrix_rows().front();
-    return std::all_of(first_row.begin(), first_row.end(), [](std::int64_t v) { return v > 0; });
 }
 
 std::vector<Polynomial> groebner_modulo(std::span<const Polynomial> generators, std::uint32_t p,

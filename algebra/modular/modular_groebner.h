@@ -51,12 +51,6 @@ struct ModularStats {
 GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                                 const ModularOptions& options = {}, ModularStats* stats = nullptr);
 
-// Orders whose first weight row is positive (grlex, grevlex, positive weights). F4 batches the
-// pairs of least sugar only under these; under the others (lex, elimination) the modular
-// algorithm first computes a grevlex basis and converts it by FGLM when the ideal is
-// zero-dimensional, else runs F4 one pair at a time.
-bool is_degree_order(const MonomialOrder& order);
-
 // `--algorithm auto`: Buchberger first, for at most 20 ms under degree orders and 5 ms under
 // the others (small ideals finish within it, and there Buchberger beats the modular
 // algorithm's fixed cost of two primes and a certification; lex bases of zero-dimensional

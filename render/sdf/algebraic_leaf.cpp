@@ -21,9 +21,9 @@ namespace {
 class AlgebraicLeaf final : public Node {
   public:
     AlgebraicLeaf(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
-                  const Material& material, TraceMethod method, MaterialPtr pattern)
+                  MaterialPtr material, TraceMethod method)
         : f_(std::move(f)),
-          pattern_(std::move(pattern)),
+          material_(std::move(material)),
           clip_(clip),
           tracer_(*f_, method, bounding_sphere(clip).radius) {
         kind_ = DistanceKind::estimate;
@@ -33,12 +33,6 @@ class AlgebraicLeaf final : public Node {
         } else {
             bounds_ = {sphere.center - Vec3(sphere.radius), sphere.center + Vec3(sphere.radius)};
         }
-        look_.color = material.outside;
-        look_.inside = material.inside;
-        look_.ambient = material.ambient;
-        look_.diffuse = material.diffuse;
-        look_.specular = material.specular;
-        look_.shininess = material.shininess;
     }
 
     double value(const Vec3& p) const override {
@@ -49,7 +43,7 @@ class AlgebraicLeaf final : public Node {
             length > 0.0 ? vg.value / length : std::copysign(INFINITY, vg.value);
         return std::max(clip_distance(clip_, p), estimate);
     }
-    Look look(const Vec3& p) const override { return pattern_ ? pattern_->at(p) : look_; }
+    Look look(const Vec3& p) const override { return material_->at(p); }
     Vec3 gradient(const Vec3& p, double) const override {
         return to_vec(f_->value_gradient(to_point(p)).gradient);
     }
@@ -66,18 +60,27 @@ class AlgebraicLeaf final : public Node {
 
   private:
     std::shared_ptr<const algebra::CompiledPolynomial> f_;
-    MaterialPtr pattern_;
+    MaterialPtr material_;
     ClipRegion clip_;
     SurfaceTracer tracer_;
-    Look look_;
 };
 
 }  // namespace
 
 NodePtr make_algebraic(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
-                       const Material& material, TraceMethod method, MaterialPtr pattern) {
-    return std::make_shared<AlgebraicLeaf>(std::move(f), clip, material, method,
-                                           std::move(pattern));
+                       MaterialPtr material, TraceMethod method) {
+    return std::make_shared<AlgebraicLeaf>(std::move(f), clip, std::move(material), method);
+}
+
+MaterialPtr node_material(const Material& material) {
+    auto m = std::make_shared<NodeMaterial>();
+    m->look.color = material.outside;
+    m->look.inside = material.inside;
+    m->look.ambient = material.ambient;
+    m->look.diffuse = material.diffuse;
+    m->look.specular = material.specular;
+    m->look.shininess = material.shininess;
+    return m;
 }
 
 }  // namespace locus::render::sdf

@@ -165,21 +165,13 @@ class Reader {
                              "give exactly one of 'equation' and 'param'");
         }
         const ClipRegion region = clip(r, table, path);
-        Material two_sided;
-        if (material) {
-            two_sided.outside = material->look.color;
-            two_sided.inside = material->look.inside;
-            two_sided.ambient = material->look.ambient;
-            two_sided.diffuse = material->look.diffuse;
-            two_sided.specular = material->look.specular;
-            two_sided.shininess = material->look.shininess;
-        }
         if (!compile_) {
             throw InputError(source.key, "algebraic leaves need a surface compiler");
         }
         auto compiled = std::make_shared<const algebra::CompiledPolynomial>(compile_(source));
-        return make_algebraic(std::move(compiled), region, two_sided, method_,
-                              material && material->checker ? material : nullptr);
+        // Without a material, the renderer's two-sided default (orange outside, blue inside).
+        return make_algebraic(std::move(compiled), region,
+                              material ? material : node_material(Material{}), method_);
     }
 
     NodePtr shape(const std::string& type, TableReader& r, const toml::table& table,

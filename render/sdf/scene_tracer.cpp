@@ -39,6 +39,23 @@ struct Progress {
 
 }  // namespace
 
+Bounds finite_bounds(const std::vector<NodePtr>& objects) {
+    Bounds box{Vec3(INFINITY), Vec3(-INFINITY)};
+    for (const NodePtr& object : objects) {
+        if (object->bounds().is_finite()) {
+            box = box.united(object->bounds());
+        }
+    }
+    return box;
+}
+
+double scene_scale(const Bounds& finite) {
+    if (!(finite.min.x <= finite.max.x)) {
+        return 1.0;
+    }
+    return std::max(1e-3, 0.5 * glm::length(finite.max - finite.min));
+}
+
 double SceneTracer::bounded_value(const Item& item, const Vec3& p) const {
     // Outside its bounding box an item is at least as far as the box: a second lower bound
     // of the distance, much better than value/L for fields that flatten out far away (soft
@@ -58,10 +75,8 @@ SceneTracer::SceneTracer(const std::vector<NodePtr>& objects, double scale, Spee
         items_.push_back({node, 1.0 / node->lipschitz(), node->traces_exactly(),
                           node->is_convex_exact(), node->primitive_count()});
         (node->traces_exactly() ? exact_ : marched_).push_back(index);
-        if (node->bounds().is_finite()) {
-            finite_box_ = finite_box_.united(node->bounds());
-        }
     }
+    finite_box_ = finite_bounds(flat);
 }
 
 SceneHit SceneTracer::first_hit(const Ray& ray, Interval interval, double footprint,

@@ -38,6 +38,12 @@ struct SceneHit {
     bool found() const { return item >= 0; }
 };
 
+// The box of the bounded objects (empty, min > max, when none are bounded), and the size of
+// the scene derived from it: half its diagonal, at least 1e-3, and 1 for an empty box. The
+// tracer's tolerances and the renderer's far distance scale with it.
+Bounds finite_bounds(const std::vector<NodePtr>& objects);
+double scene_scale(const Bounds& finite);
+
 class SceneTracer {
   public:
     // `scale`: the size of the scene's finite part, for tolerances.

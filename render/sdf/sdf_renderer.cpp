@@ -3,12 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
+#include "render/detail/image_rows.h"
 #include "render/sdf/algebraic_leaf.h"
 
 namespace locus::render {
@@ -19,28 +15,13 @@ std::vector<sdf::NodePtr> scene_items(const Scene& scene,
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         items.push_back(sdf::make_algebraic(
             std::make_shared<const algebra::CompiledPolynomial>(surfaces[i]),
-            scene.surfaces[i].clip, scene.surfaces[i].material, scene.options.method));
+            scene.surfaces[i].clip, sdf::node_material(scene.surfaces[i].material),
+            scene.options.method));
     }
     return items;
 }
 
 namespace {
-
-// The size of the scene's finite part: tolerances and the far distance scale with it.
-double finite_scale(const std::vector<sdf::NodePtr>& items, Vec3& center) {
-    sdf::Bounds box{Vec3(INFINITY), Vec3(-INFINITY)};
-    for (const sdf::NodePtr& item : items) {
-        if (item->bounds().is_finite()) {
-            box = box.united(item->bounds());
-        }
-    }
-    if (!(box.min.x <= box.max.x)) {
-        center = Vec3(0.0);
-        return 1.0;
-    }
-    center = 0.5 * (box.min + box.max);
-    return std::max(1e-3, 0.5 * glm::length(box.max - box.min));
-}
 
 class SdfShader {
   public:
@@ -140,8 +121,9 @@ RenderedImage render_sdf_scene(const Scene& scene,
                                sdf::SpeedUps speed_ups) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<sdf::NodePtr> items = scene_items(scene, surfaces);
-    Vec3 center;
-    const double scale = finite_scale(items, center);
+    const sdf::Bounds finite = sdf::finite_bounds(items);
+    const double scale = sdf::scene_scale(finite);
+    const Vec3 center = finite.min.x <= finite.max.x ? 0.5 * (finite.min + finite.max) : Vec3(0.0);
     const Camera camera(scene.camera.value_or(default_camera(scene)), scene.width, scene.height);
     const std::vector<Light> lights = scene.lights.empty() ? default_lights() : scene.lights;
     const double far = 200.0 * (scale + glm::length(camera.eye() - center));
@@ -153,17 +135,9 @@ RenderedImage render_sdf_scene(const Scene& scene,
                              glm::length(camera.direction(0.5 * scene.width, 0.5 * scene.height)) /
                              k;
 
-    RenderedImage image;
-    image.width = scene.width;
-    image.height = scene.height;
+    RenderedImage image = detail::blank_image(scene.width, scene.height);
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
-    image.color.assign(3 * pixels, 0.0f);
-    image.depth.assign(pixels, INFINITY);
-    image.normal.assign(3 * pixels, 0.0f);
-    image.work.assign(pixels, 0.0f);
     std::atomic<long> hits{0}, undecided{0}, primary_work{0};
-    std::atomic<int> rows_done{0};
-    std::mutex progress_mutex;
 
     auto render_row = [&](int y) {
         long row_hits = 0, row_work = 0;
@@ -208,26 +182,9 @@ RenderedImage render_sdf_scene(const Scene& scene,
         hits += row_hits;
         undecided += row_counters.undecided;
         primary_work += row_work;
-        const int done = ++rows_done;
-        if (execution.progress) {
-            std::unique_lock lock(progress_mutex, std::try_to_lock);
-            if (lock.owns_lock()) {
-                execution.progress(static_cast<double>(done) / scene.height);
-            }
-        }
     };
 
-    const int threads =
-        execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, scene.height, 1),
-                          [&](const tbb::blocked_range<int>& range) {
-                              for (int y = range.begin(); y < range.end(); ++y) {
-                                  render_row(y);
-                              }
-                          });
-    });
+    detail::for_each_row(scene.height, execution, render_row);
     if (stats != nullptr) {
         stats->seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -186,6 +186,7 @@ TEST(Modular, CertificationRejectsACorruptedBasis) {
         parse_ideal_file("vars: x,y,z\norder: grevlex\nx^2+y*z-2\ny^2+x*z-3\nz^2+x*y-5\n");
     const GroebnerResult r = modular_groebner(ideal.generators);
     ASSERT_TRUE(check_groebner_basis(r.basis, ideal.generators).ok);
+    ASSERT_TRUE(certify_groebner_basis(r.basis, ideal.generators).ok);
     // Change one coefficient of the last element by 1/p-sized noise: still "looks" right
     // modulo most primes' reconstruction bounds, but the exact check must fail.
     std::vector<Polynomial> corrupted = r.basis;
@@ -201,6 +202,8 @@ TEST(Modular, CertificationRejectsACorruptedBasis) {
     }
     last = fixed;
     EXPECT_FALSE(check_groebner_basis(corrupted, ideal.generators).ok);
+    // The certification the modular route runs (fraction-free, Gebauer–Möller pairs) too.
+    EXPECT_FALSE(certify_groebner_basis(corrupted, ideal.generators).ok);
 }
 
 TEST(Modular, F4ModuloAPrimeIsTheRationalBasisReduced) {

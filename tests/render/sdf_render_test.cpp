@@ -230,8 +230,6 @@ TEST(SdfRender, AlgebraicSurfaceInAPlainUnionKeepsItsExactRoot) {
     const Scene scene = parse_scene(R"(
 [[object]]
 type = "union"
-translate = [0, 0, 0.0]
-scale = 1.0
   [[object.children]]
   type = "sphere"
   radius = 0.3

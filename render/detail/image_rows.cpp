@@ -1,0 +1,49 @@
+#include "render/detail/image_rows.h"
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+namespace locus::render::detail {
+
+RenderedImage blank_image(int width, int height) {
+    RenderedImage image;
+    image.width = width;
+    image.height = height;
+    const std::size_t pixels = static_cast<std::size_t>(width) * height;
+    image.color.assign(3 * pixels, 0.0f);
+    image.depth.assign(pixels, INFINITY);
+    image.normal.assign(3 * pixels, 0.0f);
+    image.work.assign(pixels, 0.0f);
+    return image;
+}
+
+void for_each_row(int height, const ExecutionSettings& execution,
+                  const std::function<void(int)>& row) {
+    std::atomic<int> rows_done{0};
+    std::mutex progress_mutex;
+    const int threads =
+        execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, height, 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              for (int y = range.begin(); y < range.end(); ++y) {
+                                  row(y);
+                                  const int done = ++rows_done;
+                                  if (execution.progress) {
+                                      std::unique_lock lock(progress_mutex, std::try_to_lock);
+                                      if (lock.owns_lock()) {
+                                          execution.progress(static_cast<double>(done) / height);
+                                      }
+                                  }
+                              }
+                          });
+    });
+}
+
+}  // namespace locus::render::detail
