@@ -102,8 +102,9 @@ struct SparseRow {
 class F4Engine {
   public:
     F4Engine(const MonomialLayout& layout, const PrimeField& field, const F4Options& options,
-             F4Stats& stats)
-        : layout_(layout),
+             F4Stats& stats, F4Trace* record = nullptr)
+        : record_(record),
+          layout_(layout),
           words_(layout.words()),
           field_(field),
           options_(options),
@@ -128,11 +129,40 @@ class F4Engine {
                 for (std::size_t i = 0; i < g.size(); ++i) {
                     degree = std::max(degree, layout_.leading_weight(g.monomial(i, words_)));
                 }
+                if (record_ != nullptr) {
+                    record_->generator_leading.emplace_back(g.monomials.begin(),
+                                                            g.monomials.begin() + words_);
+                }
                 add_element(monic(g), degree);
             }
         }
         while (!pairs_.empty()) {
             step();
+        }
+        return reduced_basis();
+    }
+
+    std::optional<std::vector<ModularPolynomial>> replay(
+        const F4Trace& trace, std::span<const ModularPolynomial> generators) {
+        std::size_t next = 0;
+        for (const ModularPolynomial& g : generators) {
+            if (g.is_zero()) {
+                continue;
+            }
+            if (next == trace.generator_leading.size() ||
+                !layout_.equal(g.monomials.data(), trace.generator_leading[next].data())) {
+                return std::nullopt;
+            }
+            ++next;
+            append_element(monic(g));
+        }
+        if (next != trace.generator_leading.size()) {
+            return std::nullopt;
+        }
+        for (const F4Trace::Step& step : trace.steps) {
+            if (!replay_step(step)) {
+                return std::nullopt;
+            }
         }
         return reduced_basis();
     }
@@ -147,6 +177,13 @@ class F4Engine {
     }
 
     const std::uint64_t* lead(std::size_t i) const { return basis_[i].poly.monomials.data(); }
+
+    // An element without pairs (a replay repeats the recorded steps instead).
+    void append_element(ModularPolynomial poly) {
+        const std::size_t h = basis_.size();
+        basis_.push_back({std::move(poly), 0, false, 0});
+        basis_[h].mask = layout_.divisibility_mask(lead(h));
+    }
 
     // Gebauer–Möller (Becker–Weispfenning's UPDATE) for the element just appended.
     void add_element(ModularPolynomial poly, std::uint32_t sugar) {
@@ -455,30 +492,56 @@ class F4Engine {
         // Reduce the S-halves by the reducers, then echelonize what is left among itself.
         std::vector<std::uint64_t> acc(width, 0);
         std::vector<SparseRow> fresh;
-        for (const RowSpec& spec : rows) {
+        std::vector<std::size_t> useful;  // rows that gave new elements, in order
+        for (std::size_t r = 0; r < rows.size(); ++r) {
             check_deadline();
-            const SparseRow row = to_sparse(spec, column_of);
-            for (std::size_t k = 0; k < row.columns.size(); ++k) {
-                acc[row.columns[k]] = row.coefficients[k];
-            }
-            SparseRow reduced = reduce_dense(acc, row.columns.front(), pivot_of_column, pivots);
-            if (reduced.columns.empty()) {
+            std::optional<SparseRow> reduced =
+                reduce_row(to_sparse(rows[r], column_of), acc, pivot_of_column, pivots);
+            if (!reduced) {
                 ++stats_.zero_rows;
                 continue;
             }
-            const std::uint64_t inverse = field_.inverse(reduced.coefficients.front());
-            for (std::uint32_t& c : reduced.coefficients) {
-                c = static_cast<std::uint32_t>(field_.multiply(c, inverse));
-            }
-            pivot_of_column[reduced.columns.front()] = static_cast<std::int64_t>(pivots.size());
-            pivots.push_back(reduced);
-            fresh.push_back(std::move(reduced));
+            useful.push_back(r);
+            fresh.push_back(std::move(*reduced));
         }
         stats_.linear_algebra_seconds += seconds_since(algebra_start);
-        // New elements, smallest leading monomial first.
+        if (record_ != nullptr) {
+            record_step(reducers, rows, useful, fresh, pivot_of_monomial, columns);
+        }
+        for (ModularPolynomial& poly : new_elements(fresh, columns)) {
+            add_element(std::move(poly), degree);
+        }
+    }
+
+    // Reduces `row` by the pivots (using the zeroed dense accumulator `acc`); a non-zero result
+    // is made monic and becomes the pivot of its leading column. Nothing when it reduces to 0.
+    std::optional<SparseRow> reduce_row(const SparseRow& row, std::vector<std::uint64_t>& acc,
+                                        std::vector<std::int64_t>& pivot_of_column,
+                                        std::vector<SparseRow>& pivots) const {
+        for (std::size_t k = 0; k < row.columns.size(); ++k) {
+            acc[row.columns[k]] = row.coefficients[k];
+        }
+        SparseRow reduced = reduce_dense(acc, row.columns.front(), pivot_of_column, pivots);
+        if (reduced.columns.empty()) {
+            return std::nullopt;
+        }
+        const std::uint64_t inverse = field_.inverse(reduced.coefficients.front());
+        for (std::uint32_t& c : reduced.coefficients) {
+            c = static_cast<std::uint32_t>(field_.multiply(c, inverse));
+        }
+        pivot_of_column[reduced.columns.front()] = static_cast<std::int64_t>(pivots.size());
+        pivots.push_back(reduced);
+        return reduced;
+    }
+
+    // The reduced rows as polynomials, smallest leading monomial first (the order in which
+    // they join the basis, which a replay repeats).
+    std::vector<ModularPolynomial> new_elements(std::vector<SparseRow>& fresh,
+                                                const std::vector<std::uint32_t>& columns) const {
         std::sort(fresh.begin(), fresh.end(), [](const SparseRow& a, const SparseRow& b) {
             return a.columns.front() > b.columns.front();
         });
+        std::vector<ModularPolynomial> out;
         for (const SparseRow& row : fresh) {
             ModularPolynomial poly;
             poly.coefficients = row.coefficients;
@@ -487,8 +550,129 @@ class F4Engine {
                 const std::uint64_t* m = table_.at(columns[c]);
                 poly.monomials.insert(poly.monomials.end(), m, m + words_);
             }
-            add_element(std::move(poly), degree);
+            out.push_back(std::move(poly));
         }
+        return out;
+    }
+
+    // Multiplier of a row: its leading monomial divided by its element's.
+    std::vector<std::uint64_t> multiplier_of(const RowSpec& row) const {
+        std::vector<std::uint64_t> m(words_);
+        layout_.divide(table_.at(row.monomials.front()), lead(row.element), m.data());
+        return m;
+    }
+
+    // Keeps the useful rows of a step and the reducers they reach (through the monomials of
+    // the rows and, transitively, of those reducers); the others only served rows that reduced
+    // to zero.
+    void record_step(const std::vector<RowSpec>& reducers, const std::vector<RowSpec>& rows,
+                     const std::vector<std::size_t>& useful, const std::vector<SparseRow>& fresh,
+                     const std::vector<std::int64_t>& pivot_of_monomial,
+                     const std::vector<std::uint32_t>& columns) {
+        std::vector<char> needed(reducers.size(), 0);
+        std::vector<std::size_t> pending;
+        auto reach = [&](const RowSpec& row) {
+            for (std::uint32_t m : row.monomials) {
+                const std::int64_t pivot = m < pivot_of_monomial.size() ? pivot_of_monomial[m] : -1;
+                if (pivot >= 0 && !needed[static_cast<std::size_t>(pivot)]) {
+                    needed[static_cast<std::size_t>(pivot)] = 1;
+                    pending.push_back(static_cast<std::size_t>(pivot));
+                }
+            }
+        };
+        for (std::size_t r : useful) {
+            reach(rows[r]);
+        }
+        while (!pending.empty()) {
+            const std::size_t r = pending.back();
+            pending.pop_back();
+            reach(reducers[r]);
+        }
+        F4Trace::Step step;
+        for (std::size_t r = 0; r < reducers.size(); ++r) {
+            if (needed[r]) {
+                step.reducers.push_back(
+                    {static_cast<std::uint32_t>(reducers[r].element), multiplier_of(reducers[r])});
+            }
+        }
+        for (std::size_t k = 0; k < useful.size(); ++k) {
+            const RowSpec& row = rows[useful[k]];
+            step.rows.push_back({static_cast<std::uint32_t>(row.element), multiplier_of(row)});
+            const std::uint64_t* m = table_.at(columns[fresh[k].columns.front()]);
+            step.leading.emplace_back(m, m + words_);
+        }
+        record_->steps.push_back(std::move(step));
+    }
+
+    // One recorded step modulo this prime; false when it does not go as recorded.
+    bool replay_step(const F4Trace::Step& step) {
+        check_deadline();
+        const auto symbolic_start = Clock::now();
+        ++stats_.steps;
+        auto row_of = [&](const F4Trace::Row& r) -> std::optional<RowSpec> {
+            if (r.element >= basis_.size()) {
+                return std::nullopt;
+            }
+            return make_row(r.element, r.multiplier.data());
+        };
+        std::vector<RowSpec> reducers, rows;
+        for (const F4Trace::Row& r : step.reducers) {
+            std::optional<RowSpec> row = row_of(r);
+            if (!row) {
+                return false;
+            }
+            reducers.push_back(std::move(*row));
+        }
+        for (const F4Trace::Row& r : step.rows) {
+            std::optional<RowSpec> row = row_of(r);
+            if (!row) {
+                return false;
+            }
+            rows.push_back(std::move(*row));
+        }
+        std::vector<char> seen(table_.size(), 0);
+        for (const auto* group : {&reducers, &rows}) {
+            for (const RowSpec& row : *group) {
+                for (std::uint32_t m : row.monomials) {
+                    seen[m] = 1;
+                }
+            }
+        }
+        std::vector<std::uint32_t> column_of;
+        const std::vector<std::uint32_t> columns = order_columns(seen, column_of);
+        stats_.symbolic_seconds += seconds_since(symbolic_start);
+
+        const auto algebra_start = Clock::now();
+        std::vector<SparseRow> pivots;
+        pivots.reserve(reducers.size() + rows.size());
+        std::vector<std::int64_t> pivot_of_column(columns.size(), -1);
+        for (const RowSpec& reducer : reducers) {
+            pivots.push_back(to_sparse(reducer, column_of));
+            std::int64_t& pivot = pivot_of_column[pivots.back().columns.front()];
+            if (pivot >= 0) {
+                return false;  // two reducers for one column: not the recorded matrix
+            }
+            pivot = static_cast<std::int64_t>(pivots.size() - 1);
+        }
+        std::vector<std::uint64_t> acc(columns.size(), 0);
+        std::vector<SparseRow> fresh;
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            check_deadline();
+            std::optional<SparseRow> reduced =
+                reduce_row(to_sparse(rows[k], column_of), acc, pivot_of_column, pivots);
+            if (!reduced || !layout_.equal(table_.at(columns[reduced->columns.front()]),
+                                           step.leading[k].data())) {
+                stats_.linear_algebra_seconds += seconds_since(algebra_start);
+                return false;
+            }
+            fresh.push_back(std::move(*reduced));
+        }
+        stats_.pairs_reduced += rows.size();
+        stats_.linear_algebra_seconds += seconds_since(algebra_start);
+        for (ModularPolynomial& poly : new_elements(fresh, columns)) {
+            append_element(std::move(poly));
+        }
+        return true;
     }
 
     // The monic reduced basis: a minimal set of leading monomials, every tail reduced by one
@@ -563,6 +747,7 @@ class F4Engine {
         return out;
     }
 
+    F4Trace* record_;
     const MonomialLayout& layout_;
     std::size_t words_;
     PrimeField field_;
@@ -580,10 +765,22 @@ class F4Engine {
 
 std::vector<ModularPolynomial> f4(std::span<const ModularPolynomial> generators,
                                   const MonomialLayout& layout, const PrimeField& field,
-                                  const F4Options& options, F4Stats* stats) {
+                                  const F4Options& options, F4Stats* stats, F4Trace* record) {
+    F4Stats local;
+    if (record != nullptr) {
+        *record = F4Trace{};
+    }
+    F4Engine engine(layout, field, options, stats != nullptr ? *stats : local, record);
+    return engine.run(generators);
+}
+
+std::optional<std::vector<ModularPolynomial>> f4_replay(
+    const F4Trace& trace, std::span<const ModularPolynomial> generators,
+    const MonomialLayout& layout, const PrimeField& field, const F4Options& options,
+    F4Stats* stats) {
     F4Stats local;
     F4Engine engine(layout, field, options, stats != nullptr ? *stats : local);
-    return engine.run(generators);
+    return engine.replay(trace, generators);
 }
 
 }  // namespace locus::algebra::modular

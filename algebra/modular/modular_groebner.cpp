@@ -38,6 +38,8 @@ struct Group {
     std::size_t primes = 0;
     std::size_t first_prime_position = 0;  // ties in the majority go to the earlier group
     std::optional<std::vector<Polynomial>> candidate;
+    // The coefficient whose reconstruction failed last (element, term): tried first next time.
+    std::size_t hard_element = 0, hard_term = 0;
 };
 
 std::vector<std::uint64_t> signature_of(const std::vector<ModularPolynomial>& basis,
@@ -110,24 +112,42 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
     ++group.primes;
 }
 
-// Rational reconstruction of every coefficient; nothing when one fails.
-std::optional<std::vector<Polynomial>> reconstruct(const Group& group, const RingPtr& ring) {
-    std::vector<Polynomial> basis;
+// Rational reconstruction of every coefficient; nothing when one fails. The coefficient that
+// failed last time is tried first: it usually fails again until enough primes are in, so an
+// attempt after every prime costs one reconstruction, and the lift is taken as soon as the
+// primes suffice (attempts after 1, 2, 3, 4, 6, 9, 13, 19, … primes, as before, used up to
+// half as many primes again as needed).
+std::optional<std::vector<Polynomial>> reconstruct(Group& group, const RingPtr& ring) {
     Integer reduced;
     Rational value;
-    for (const LiftedElement& element : group.elements) {
-        Polynomial poly(ring);
-        for (const LiftedTerm& term : element) {
-            fmpz_mod(reduced.get(), term.residue.get(), group.modulus.get());
-            if (fmpz_is_zero(reduced.get())) {
-                continue;
-            }
-            if (!fmpq_reconstruct_fmpz(value.get(), reduced.get(), group.modulus.get())) {
+    auto reconstructs = [&](const LiftedTerm& term) {
+        fmpz_mod(reduced.get(), term.residue.get(), group.modulus.get());
+        return fmpz_is_zero(reduced.get()) ||
+               fmpq_reconstruct_fmpz(value.get(), reduced.get(), group.modulus.get()) != 0;
+    };
+    if (group.hard_element < group.elements.size() &&
+        group.hard_term < group.elements[group.hard_element].size() &&
+        !reconstructs(group.elements[group.hard_element][group.hard_term])) {
+        return std::nullopt;
+    }
+    // From the hard element on, where the large coefficients are, and then the others.
+    const std::size_t count = group.elements.size();
+    const std::size_t first = group.hard_element < count ? group.hard_element : 0;
+    std::vector<Polynomial> basis(count, Polynomial(ring));
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t e = (first + i) % count;
+        Polynomial& poly = basis[e];
+        for (std::size_t t = 0; t < group.elements[e].size(); ++t) {
+            const LiftedTerm& term = group.elements[e][t];
+            if (!reconstructs(term)) {
+                group.hard_element = e;
+                group.hard_term = t;
                 return std::nullopt;
             }
-            poly.push_back_term(value, term.monomial.data());
+            if (!fmpz_is_zero(reduced.get())) {
+                poly.push_back_term(value, term.monomial.data());
+            }
         }
-        basis.push_back(std::move(poly));
     }
     return basis;
 }
@@ -147,16 +167,6 @@ bool agrees_modulo(const std::vector<Polynomial>& candidate,
         }
     }
     return true;
-}
-
-// Reconstruct after 1, 2, 3, 4, 6, 9, 13, 19, … primes (×1.5 from 4 on): a failed reconstruction
-// costs as much as a prime, so the attempts thin out geometrically.
-bool worth_reconstructing(std::size_t primes) {
-    std::size_t next = 1;
-    while (next < primes) {
-        next = next < 4 ? next + 1 : next + next / 2;
-    }
-    return next == primes;
 }
 
 // Primes below 2³¹ from a random starting point: with a fixed sequence an input could be made
@@ -230,6 +240,8 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
 
     std::vector<Group> groups;
     PrimeSequence primes(options.primes);
+    bool tracing = options.trace;
+    std::optional<modular::F4Trace> trace;  // of the first prime F4 ran on
     while (s.primes_used.size() < options.max_primes) {
         const std::uint32_t p = primes.next();
         s.primes_used.push_back(p);
@@ -252,23 +264,47 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         }
         const auto f4_start = Clock::now();
         modular::F4Stats f4_stats;
+        // Without certification the prime that confirms a candidate runs F4 afresh, so that
+        // a replay of an unlucky first prime cannot confirm its own lift.
+        const bool confirming =
+            !options.certify && std::any_of(groups.begin(), groups.end(),
+                                            [](const Group& g) { return g.candidate.has_value(); });
+        auto run_f4 = [&](const std::vector<ModularPolynomial>& polys, const MonomialLayout& l) {
+            if (tracing && trace && !confirming) {
+                std::optional<std::vector<ModularPolynomial>> replayed =
+                    modular::f4_replay(*trace, polys, l, field, f4_options, &f4_stats);
+                if (replayed) {
+                    ++s.replayed;
+                    return std::move(*replayed);
+                }
+                ++s.replays_refused;
+                f4_stats = {};
+            }
+            if (tracing && !trace) {
+                trace.emplace();
+                return modular::f4(polys, l, field, f4_options, &f4_stats, &*trace);
+            }
+            return modular::f4(polys, l, field, f4_options, &f4_stats);
+        };
         std::optional<std::vector<ModularPolynomial>> converted;
         if (via_grevlex) {
             std::vector<ModularPolynomial> reduced_grevlex;
             for (const Polynomial& f : grevlex_inputs) {
                 reduced_grevlex.push_back(*modular::reduce_modulo(f, field));
             }
-            converted = modular::fglm(
-                modular::f4(reduced_grevlex, grevlex_ring->layout(), field, f4_options, &f4_stats),
-                grevlex_ring->layout(), layout, field, 3000, options.deadline);
+            converted =
+                modular::fglm(run_f4(reduced_grevlex, grevlex_ring->layout()),
+                              grevlex_ring->layout(), layout, field, 3000, options.deadline);
+            if (!converted && trace) {
+                trace.reset();  // recorded under grevlex: no use under the ring's own order
+            }
             via_grevlex = converted.has_value();
             if (converted) {
                 s.fglm = true;
             }
         }
         const std::vector<ModularPolynomial> basis =
-            converted ? std::move(*converted)
-                      : modular::f4(reduced, layout, field, f4_options, &f4_stats);
+            converted ? std::move(*converted) : run_f4(reduced, layout);
         if (s.primes_used.size() == 1 || s.f4.steps == 0) {
             s.f4 = f4_stats;
         }
@@ -300,7 +336,15 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                     certify_groebner_basis(candidate, inputs, options.deadline);
                 s.certify_seconds += seconds_since(certify_start);
                 if (!check.ok) {
-                    group->candidate.reset();  // stable but wrong: lift with more primes
+                    // Stable but wrong. Replays of an unlucky first prime would keep making
+                    // the same wrong lift: start again from fresh F4 runs on more primes.
+                    if (s.replayed > 0) {
+                        tracing = false;
+                        trace.reset();
+                        groups.clear();
+                    } else {
+                        group->candidate.reset();
+                    }
                     continue;
                 }
                 s.certified = true;
@@ -318,9 +362,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
             return result;
         }
         add_to_group(*group, basis, p, layout);
-        if (worth_reconstructing(group->primes)) {
-            group->candidate = reconstruct(*group, ring);
-        }
+        group->candidate = reconstruct(*group, ring);
         s.lift_seconds += seconds_since(lift_start);
     }
     throw InputError("modular Gröbner basis",

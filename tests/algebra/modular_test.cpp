@@ -1,7 +1,8 @@
 // Multi-modular F4 (issue 7): every literature basis and every Singular oracle basis recomputed
 // by modular_groebner equals the Buchberger result; an unlucky prime forced by construction is
 // detected and set aside; the certification rejects a corrupted basis; F4 modulo one prime
-// agrees with the rational basis reduced modulo that prime.
+// agrees with the rational basis reduced modulo that prime; a replay of the first prime's F4
+// trace equals F4 on another prime, and is refused where the computation differs.
 #include "algebra/modular/modular_groebner.h"
 
 #include <gtest/gtest.h>
@@ -222,6 +223,73 @@ TEST(Modular, F4ModuloAPrimeIsTheRationalBasisReduced) {
         EXPECT_EQ(a->monomials, b->monomials);
     }
     EXPECT_THROW(groebner_modulo(ideal.generators, 65520), InputError);
+}
+
+// Inputs modulo p as F4 takes them.
+std::vector<modular::ModularPolynomial> modulo(const std::vector<Polynomial>& polys,
+                                               std::uint32_t p) {
+    std::vector<modular::ModularPolynomial> out;
+    for (const Polynomial& f : polys) {
+        out.push_back(*modular::reduce_modulo(f, modular::PrimeField{p}));
+    }
+    return out;
+}
+
+TEST(Modular, ReplayOfTheFirstPrimesTraceEqualsF4OnAnotherPrime) {
+    for (const char* name : {"cyclic5", "katsura6", "eco6", "noon4"}) {
+        const IdealFile ideal = parse_ideal_file(
+            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        const MonomialLayout& layout = ideal.ring->layout();
+        const std::uint32_t p1 = 2147483647u, p2 = 2147483629u;
+        modular::F4Trace trace;
+        modular::F4Stats full_stats;
+        modular::f4(modulo(ideal.generators, p1), layout, {p1}, {}, &full_stats, &trace);
+        const auto direct = modular::f4(modulo(ideal.generators, p2), layout, {p2});
+        modular::F4Stats replay_stats;
+        const auto replayed = modular::f4_replay(trace, modulo(ideal.generators, p2), layout, {p2},
+                                                 {}, &replay_stats);
+        ASSERT_TRUE(replayed.has_value()) << name;
+        ASSERT_EQ(replayed->size(), direct.size()) << name;
+        for (std::size_t i = 0; i < direct.size(); ++i) {
+            EXPECT_EQ((*replayed)[i].monomials, direct[i].monomials) << name;
+            EXPECT_EQ((*replayed)[i].coefficients, direct[i].coefficients) << name;
+        }
+        // The point of the trace: no row that reduces to zero is reduced again.
+        EXPECT_GT(full_stats.zero_rows, 0u) << name;
+        EXPECT_EQ(replay_stats.zero_rows, 0u) << name;
+        EXPECT_LT(replay_stats.pairs_reduced, full_stats.pairs_reduced) << name;
+    }
+}
+
+TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
+    // S(x² − p·y, xy − z) = −p·y² + xz: its leading monomial is y² over Q and xz modulo p, so
+    // a trace recorded modulo another prime does not fit p. The inputs' leading coefficients
+    // are 1, so nothing sets p aside before F4.
+    const std::uint32_t p = 2147483629u, other = 2147483647u;
+    const IdealFile ideal =
+        parse_ideal_file("vars: x,y,z\norder: grevlex\nx^2-" + std::to_string(p) + "*y\nx*y-z\n");
+    const MonomialLayout& layout = ideal.ring->layout();
+    modular::F4Trace trace;
+    modular::f4(modulo(ideal.generators, other), layout, {other}, {}, nullptr, &trace);
+    EXPECT_FALSE(modular::f4_replay(trace, modulo(ideal.generators, p), layout, {p}).has_value());
+    // The multi-modular driver then runs F4 afresh on that prime, and the vote and the lift
+    // still give the rational basis.
+    ModularOptions options;
+    options.primes = {other, p};
+    ModularStats stats;
+    const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
+    EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
+              format_polynomials(groebner(ideal.generators).basis, *ideal.ring,
+                                 OutputFormat::normalized));
+    EXPECT_GE(stats.replays_refused, 1u);
+    EXPECT_TRUE(stats.certified);
+    // Without tracing, the same basis.
+    options.trace = false;
+    ModularStats untraced;
+    const GroebnerResult r2 = modular_groebner(ideal.generators, options, &untraced);
+    EXPECT_EQ(format_polynomials(r2.basis, *ideal.ring, OutputFormat::normalized),
+              format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized));
+    EXPECT_EQ(untraced.replayed, 0u);
 }
 
 }  // namespace
