@@ -30,6 +30,7 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
         if (uses_family) {
             family.expand_row(image_y, row);
         }
+        RayPolynomial restriction;
         for (int x = 0; x < width; ++x) {
             const double image_x = x + 0.5;
             const Ray ray = camera.ray(image_x, image_y);
@@ -40,9 +41,8 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
                 result.hits[p] = {};
                 continue;
             }
-            RayPolynomial restriction;
             if (uses_family) {
-                restriction = RayFamily::restriction(row, image_x);
+                RayFamily::restriction(row, image_x, restriction);
             }
             result.hits[p] = tracer.first_hit(ray, interval, uses_family ? &restriction : nullptr,
                                               family.origin_t());

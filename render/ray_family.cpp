@@ -69,6 +69,11 @@ void RayFamily::expand_row(double y, RowExpansion& out) const {
 
 RayPolynomial RayFamily::restriction(const RowExpansion& row, double x) {
     RayPolynomial result;
+    restriction(row, x, result);
+    return result;
+}
+
+void RayFamily::restriction(const RowExpansion& row, double x, RayPolynomial& result) {
     result.degree = row.degree;
     const double u = (x - row.center_x) * row.inverse_half_width;
     for (int k = 0; k <= row.degree; ++k) {
@@ -79,7 +84,6 @@ RayPolynomial RayFamily::restriction(const RowExpansion& row, double x) {
         }
         result.c[k] = value;
     }
-    return result;
 }
 
 }  // namespace locus::render

@@ -53,6 +53,9 @@ class RayFamily {
     // The restriction of the primary ray at continuous coordinate x of an expanded row, in the
     // variable s = t − origin_t().
     static RayPolynomial restriction(const RowExpansion& row, double x);
+    // The same, written into `out` (coefficients 0..degree): the per-pixel loops keep one
+    // RayPolynomial rather than zero-fill and copy 41 coefficients for every ray.
+    static void restriction(const RowExpansion& row, double x, RayPolynomial& out);
 
   private:
     const Camera* camera_;

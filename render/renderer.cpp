@@ -51,6 +51,7 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         std::vector<double> nearest(static_cast<std::size_t>(scene.width), INFINITY);
         std::vector<Vec3> normals(static_cast<std::size_t>(scene.width), Vec3(0.0));
         std::vector<int> work(static_cast<std::size_t>(scene.width), 0);
+        std::vector<RayPolynomial> restrictions(surfaces.size());  // one per surface
         for (int sy = 0; sy < k; ++sy) {
             const double image_y = y + (sy + 0.5) / k;
             if (uses_family) {
@@ -70,9 +71,9 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         if (interval.is_empty()) {
                             continue;
                         }
-                        RayPolynomial restriction;
+                        RayPolynomial& restriction = restrictions[s];
                         if (uses_family) {
-                            restriction = RayFamily::restriction(rows[s], image_x);
+                            RayFamily::restriction(rows[s], image_x, restriction);
                         }
                         const RootResult hit = tracers[s].first_hit(
                             ray, interval, uses_family ? &restriction : nullptr,
