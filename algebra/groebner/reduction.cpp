@@ -4,41 +4,6 @@
 
 namespace locus::algebra::detail {
 
-namespace {
-
-// Divides p and result by the gcd of all their coefficients (both are parts of one polynomial).
-void remove_common_content(IntegerPolynomial& p, IntegerPolynomial& result) {
-    Integer g;
-    for (const auto* poly : {&result, &p}) {
-        for (const auto& c : poly->coefficients) {
-            fmpz_gcd(g.get(), g.get(), c.get());
-            if (g.is_one()) {
-                return;
-            }
-        }
-    }
-    if (g.is_zero()) {
-        return;
-    }
-    for (auto* poly : {&result, &p}) {
-        for (auto& c : poly->coefficients) {
-            fmpz_divexact(c.get(), c.get(), g.get());
-        }
-    }
-}
-
-// Size of the coefficients that grow: the leading one of p (it meets every reducer) and the
-// first one of the result (every step scales it).
-std::size_t coefficient_bits(const IntegerPolynomial& p, const IntegerPolynomial& result) {
-    std::size_t bits = p.empty() ? 0 : fmpz_bits(p.coefficients[0].get());
-    if (!result.empty()) {
-        bits = std::max<std::size_t>(bits, fmpz_bits(result.coefficients[0].get()));
-    }
-    return bits;
-}
-
-}  // namespace
-
 long Reducer::find_reducer(const std::uint64_t* m, const std::vector<BasisElement>& basis) const {
     const std::uint64_t mask = layout_.divisibility_mask(m);
     const std::size_t w = layout_.words();
@@ -122,57 +87,75 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
     const std::size_t w = layout_.words();
     IntegerPolynomial result;
     result.sugar = p.sugar;
-    std::vector<std::uint64_t> m(w);
-    Integer g, a, b;
-    std::size_t head = 0;  // terms of p before `head` are already gone (moved or cancelled)
-    std::size_t bits_after_content = coefficient_bits(p, result);
-    while (head < p.size()) {
-        const std::uint64_t* lm = p.monomial(head, w);
-        const long k = find_reducer(lm, basis);
+    std::size_t bits_after_content = p.empty() ? 0 : fmpz_bits(p.coefficients[0].get());
+    GeoBucket& bucket = bucket_;
+    bucket.assign(std::move(p));
+    std::vector<std::uint64_t>& lm = leading_;
+    std::vector<std::uint64_t>& m = multiplier_;
+    lm.resize(w);
+    m.resize(w);
+    Integer lc, g, a, b;
+    while (bucket.pop_leading(lm.data(), lc)) {
+        // Fraction-free steps multiply everything by a each time, but much of that growth is a
+        // common factor: divide it out whenever the coefficients have doubled in size since
+        // the last time (Singular does the same with p_Content during long reductions).
+        std::size_t bits = fmpz_bits(lc.get());
+        if (!result.empty()) {
+            bits = std::max<std::size_t>(bits, fmpz_bits(result.coefficients[0].get()));
+        }
+        if (bits > 2 * bits_after_content + 64) {
+            Integer content(lc);
+            for (const Integer& c : result.coefficients) {
+                fmpz_gcd(content.get(), content.get(), c.get());
+            }
+            bucket.fold_content(content);
+            fmpz_abs(content.get(), content.get());
+            if (!content.is_one() && !content.is_zero()) {
+                fmpz_divexact(lc.get(), lc.get(), content.get());
+                for (Integer& c : result.coefficients) {
+                    fmpz_divexact(c.get(), c.get(), content.get());
+                }
+                bucket.divide_exactly(content);
+            }
+            bits_after_content = fmpz_bits(lc.get());
+            if (!result.empty()) {
+                bits_after_content = std::max<std::size_t>(bits_after_content,
+                                                           fmpz_bits(result.coefficients[0].get()));
+            }
+        }
+        const long k = find_reducer(lm.data(), basis);
         if (k < 0) {
+            result.coefficients.emplace_back(std::move(lc));
+            result.monomials.insert(result.monomials.end(), lm.begin(), lm.end());
             if (!tail) {
+                bucket.drain_into(result);  // top reduction only: keep the rest as it is
                 break;
             }
-            result.coefficients.emplace_back(std::move(p.coefficients[head]));
-            result.monomials.insert(result.monomials.end(), lm, lm + w);
-            ++head;
             continue;
         }
         const IntegerPolynomial& r = basis[static_cast<std::size_t>(k)].poly;
-        layout_.divide(lm, r.monomial(0, w), m.data());
-        fmpz_gcd(g.get(), p.coefficients[head].get(), r.coefficients[0].get());
+        layout_.divide(lm.data(), r.monomial(0, w), m.data());
+        fmpz_gcd(g.get(), lc.get(), r.coefficients[0].get());
         fmpz_divexact(a.get(), r.coefficients[0].get(), g.get());
-        fmpz_divexact(b.get(), p.coefficients[head].get(), g.get());
+        fmpz_divexact(b.get(), lc.get(), g.get());
         if (a.sign() < 0) {
             fmpz_neg(a.get(), a.get());
             fmpz_neg(b.get(), b.get());
         }
+        // a·p − b·m·r: the leading terms cancel, leaving a·(p − lt p) − b·m·(r − lt r); the
+        // terms already moved to the result are scaled by a as well.
         if (!a.is_one()) {
             for (auto& c : result.coefficients) {
                 fmpz_mul(c.get(), c.get(), a.get());
             }
+            bucket.scale(a);
         }
         const std::uint32_t sugar = layout_.leading_weight(m.data()) + r.sugar;
         result.sugar = std::max(result.sugar, sugar);
-        combine(p, head + 1, a, b, m.data(), r);
-        head = 0;
+        bucket.subtract_multiple(b, m.data(), r, 1);
         ++counts.steps;
         if (deadline_ && std::chrono::steady_clock::now() > *deadline_) {
             throw ReductionInterrupted{};
-        }
-        // Fraction-free steps multiply everything by a each time, but much of that growth is a
-        // common factor: divide it out whenever the coefficients have doubled in size since
-        // the last time (Singular does the same with p_Content during long reductions).
-        if (coefficient_bits(p, result) > 2 * bits_after_content + 64) {
-            remove_common_content(p, result);
-            bits_after_content = coefficient_bits(p, result);
-        }
-    }
-    if (!tail) {
-        // Keep the unreduced rest as it is (top reduction only).
-        for (std::size_t i = head; i < p.size(); ++i) {
-            result.coefficients.emplace_back(std::move(p.coefficients[i]));
-            result.monomials.insert(result.monomials.end(), p.monomial(i, w), p.monomial(i, w) + w);
         }
     }
     make_primitive(result);

@@ -7,6 +7,7 @@
 // used (ties: the oldest): every step multiplies p by that coefficient. Choosing the shortest
 // reducer instead let coefficients double with each new element on cyclic-6 (over 2 million
 // bits after 140 pairs, a minute of work); smallest-lc or oldest finish it in about 2 s.
+// p lives in a geobucket (geobucket.h), so a step costs about the reducer's length.
 #pragma once
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "algebra/groebner/geobucket.h"
 #include "algebra/groebner/pair_criteria.h"
 
 namespace locus::algebra::detail {
@@ -30,7 +32,7 @@ struct ReductionInterrupted {};
 
 class Reducer {
   public:
-    explicit Reducer(const MonomialLayout& layout) : layout_(layout) {}
+    explicit Reducer(const MonomialLayout& layout) : layout_(layout), bucket_(layout) {}
     void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
         deadline_ = deadline;
     }
@@ -55,6 +57,9 @@ class Reducer {
     std::optional<std::chrono::steady_clock::time_point> deadline_;
     IntegerPolynomial scratch_;
     std::vector<std::uint64_t> product_;
+    // reduce's working polynomial and monomials, kept to reuse their storage.
+    GeoBucket bucket_;
+    std::vector<std::uint64_t> leading_, multiplier_;
 };
 
 // Reduced-basis step (reduced_basis.cpp): drops elements whose leading monomial is divisible by
