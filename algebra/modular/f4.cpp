@@ -130,8 +130,7 @@ class F4Engine {
                     degree = std::max(degree, layout_.leading_weight(g.monomial(i, words_)));
                 }
                 if (record_ != nullptr) {
-                    record_->generator_leading.emplace_back(g.monomials.begin(),
-                                                            g.monomials.begin() + words_);
+                    ++record_->generators;
                 }
                 add_element(monic(g), degree);
             }
@@ -144,19 +143,13 @@ class F4Engine {
 
     std::optional<std::vector<ModularPolynomial>> replay(
         const F4Trace& trace, std::span<const ModularPolynomial> generators) {
-        std::size_t next = 0;
+        replaying_ = &trace;
         for (const ModularPolynomial& g : generators) {
-            if (g.is_zero()) {
-                continue;
+            if (!g.is_zero()) {
+                append_element(monic(g));
             }
-            if (next == trace.generator_leading.size() ||
-                !layout_.equal(g.monomials.data(), trace.generator_leading[next].data())) {
-                return std::nullopt;
-            }
-            ++next;
-            append_element(monic(g));
         }
-        if (next != trace.generator_leading.size()) {
+        if (basis_.size() != trace.generators) {
             return std::nullopt;
         }
         for (const F4Trace::Step& step : trace.steps) {
@@ -179,8 +172,11 @@ class F4Engine {
     const std::uint64_t* lead(std::size_t i) const { return basis_[i].poly.monomials.data(); }
 
     // An element without pairs (a replay repeats the recorded steps instead).
+    // In a replay, also notes whether its support is the recorded one.
     void append_element(ModularPolynomial poly) {
         const std::size_t h = basis_.size();
+        fits_trace_.push_back(h < replaying_->supports.size() &&
+                              poly.monomials == replaying_->supports[h]);
         basis_.push_back({std::move(poly), 0, false, 0});
         basis_[h].mask = layout_.divisibility_mask(lead(h));
     }
@@ -188,6 +184,9 @@ class F4Engine {
     // Gebauer–Möller (Becker–Weispfenning's UPDATE) for the element just appended.
     void add_element(ModularPolynomial poly, std::uint32_t sugar) {
         const std::size_t h = basis_.size();
+        if (record_ != nullptr) {
+            record_->supports.push_back(poly.monomials);
+        }
         basis_.push_back({std::move(poly), 0, false, sugar});
         basis_[h].mask = layout_.divisibility_mask(lead(h));
         std::vector<Pair> fresh;
@@ -505,10 +504,16 @@ class F4Engine {
             fresh.push_back(std::move(*reduced));
         }
         stats_.linear_algebra_seconds += seconds_since(algebra_start);
-        if (record_ != nullptr) {
-            record_step(reducers, rows, useful, fresh, pivot_of_monomial, columns);
+        std::vector<std::uint64_t> column_monomials;
+        column_monomials.reserve(columns.size() * words_);
+        for (std::uint32_t m : columns) {
+            column_monomials.insert(column_monomials.end(), table_.at(m), table_.at(m) + words_);
         }
-        for (ModularPolynomial& poly : new_elements(fresh, columns)) {
+        if (record_ != nullptr) {
+            record_step(reducers, rows, useful, fresh, pivot_of_monomial, column_of,
+                        column_monomials);
+        }
+        for (ModularPolynomial& poly : new_elements(fresh, column_monomials)) {
             add_element(std::move(poly), degree);
         }
     }
@@ -536,8 +541,8 @@ class F4Engine {
 
     // The reduced rows as polynomials, smallest leading monomial first (the order in which
     // they join the basis, which a replay repeats).
-    std::vector<ModularPolynomial> new_elements(std::vector<SparseRow>& fresh,
-                                                const std::vector<std::uint32_t>& columns) const {
+    std::vector<ModularPolynomial> new_elements(
+        std::vector<SparseRow>& fresh, const std::vector<std::uint64_t>& column_monomials) const {
         std::sort(fresh.begin(), fresh.end(), [](const SparseRow& a, const SparseRow& b) {
             return a.columns.front() > b.columns.front();
         });
@@ -547,7 +552,7 @@ class F4Engine {
             poly.coefficients = row.coefficients;
             poly.monomials.reserve(row.columns.size() * words_);
             for (std::uint32_t c : row.columns) {
-                const std::uint64_t* m = table_.at(columns[c]);
+                const std::uint64_t* m = column_monomials.data() + c * words_;
                 poly.monomials.insert(poly.monomials.end(), m, m + words_);
             }
             out.push_back(std::move(poly));
@@ -555,25 +560,21 @@ class F4Engine {
         return out;
     }
 
-    // Multiplier of a row: its leading monomial divided by its element's.
-    std::vector<std::uint64_t> multiplier_of(const RowSpec& row) const {
-        std::vector<std::uint64_t> m(words_);
-        layout_.divide(table_.at(row.monomials.front()), lead(row.element), m.data());
-        return m;
-    }
-
     // Keeps the useful rows of a step and the reducers they reach (through the monomials of
-    // the rows and, transitively, of those reducers); the others only served rows that reduced
-    // to zero.
+    // the rows and, transitively, of those reducers), with their columns renumbered over the
+    // columns these rows use; the other rows only served S-halves that reduced to zero.
     void record_step(const std::vector<RowSpec>& reducers, const std::vector<RowSpec>& rows,
                      const std::vector<std::size_t>& useful, const std::vector<SparseRow>& fresh,
                      const std::vector<std::int64_t>& pivot_of_monomial,
-                     const std::vector<std::uint32_t>& columns) {
+                     const std::vector<std::uint32_t>& column_of,
+                     const std::vector<std::uint64_t>& column_monomials) {
         std::vector<char> needed(reducers.size(), 0);
         std::vector<std::size_t> pending;
+        std::vector<char> used(column_monomials.size() / words_, 0);
         auto reach = [&](const RowSpec& row) {
             for (std::uint32_t m : row.monomials) {
-                const std::int64_t pivot = m < pivot_of_monomial.size() ? pivot_of_monomial[m] : -1;
+                used[column_of[m]] = 1;
+                const std::int64_t pivot = pivot_of_monomial[m];
                 if (pivot >= 0 && !needed[static_cast<std::size_t>(pivot)]) {
                     needed[static_cast<std::size_t>(pivot)] = 1;
                     pending.push_back(static_cast<std::size_t>(pivot));
@@ -589,87 +590,77 @@ class F4Engine {
             reach(reducers[r]);
         }
         F4Trace::Step step;
+        std::vector<std::uint32_t> renumbered(used.size(), 0);
+        for (std::size_t c = 0; c < used.size(); ++c) {
+            if (used[c]) {
+                renumbered[c] = static_cast<std::uint32_t>(step.column_monomials.size() / words_);
+                step.column_monomials.insert(step.column_monomials.end(),
+                                             column_monomials.begin() + c * words_,
+                                             column_monomials.begin() + (c + 1) * words_);
+            }
+        }
+        auto recorded = [&](const RowSpec& row) {
+            F4Trace::Row out{static_cast<std::uint32_t>(row.element), {}};
+            out.columns.reserve(row.monomials.size());
+            for (std::uint32_t m : row.monomials) {
+                out.columns.push_back(renumbered[column_of[m]]);
+            }
+            return out;
+        };
         for (std::size_t r = 0; r < reducers.size(); ++r) {
             if (needed[r]) {
-                step.reducers.push_back(
-                    {static_cast<std::uint32_t>(reducers[r].element), multiplier_of(reducers[r])});
+                step.reducers.push_back(recorded(reducers[r]));
             }
         }
         for (std::size_t k = 0; k < useful.size(); ++k) {
-            const RowSpec& row = rows[useful[k]];
-            step.rows.push_back({static_cast<std::uint32_t>(row.element), multiplier_of(row)});
-            const std::uint64_t* m = table_.at(columns[fresh[k].columns.front()]);
-            step.leading.emplace_back(m, m + words_);
+            step.rows.push_back(recorded(rows[useful[k]]));
+            step.leading.push_back(renumbered[fresh[k].columns.front()]);
         }
         record_->steps.push_back(std::move(step));
     }
 
-    // One recorded step modulo this prime; false when it does not go as recorded.
+    // One recorded step modulo this prime, on the recorded matrix; false when it does not
+    // go as recorded (an element's support differs, or a row reduces to another column).
     bool replay_step(const F4Trace::Step& step) {
         check_deadline();
-        const auto symbolic_start = Clock::now();
         ++stats_.steps;
-        auto row_of = [&](const F4Trace::Row& r) -> std::optional<RowSpec> {
-            if (r.element >= basis_.size()) {
+        const auto algebra_start = Clock::now();
+        auto row_of = [&](const F4Trace::Row& r) -> std::optional<SparseRow> {
+            if (r.element >= basis_.size() || !fits_trace_[r.element]) {
                 return std::nullopt;
             }
-            return make_row(r.element, r.multiplier.data());
+            return SparseRow{r.columns, basis_[r.element].poly.coefficients};
         };
-        std::vector<RowSpec> reducers, rows;
-        for (const F4Trace::Row& r : step.reducers) {
-            std::optional<RowSpec> row = row_of(r);
-            if (!row) {
-                return false;
-            }
-            reducers.push_back(std::move(*row));
-        }
-        for (const F4Trace::Row& r : step.rows) {
-            std::optional<RowSpec> row = row_of(r);
-            if (!row) {
-                return false;
-            }
-            rows.push_back(std::move(*row));
-        }
-        std::vector<char> seen(table_.size(), 0);
-        for (const auto* group : {&reducers, &rows}) {
-            for (const RowSpec& row : *group) {
-                for (std::uint32_t m : row.monomials) {
-                    seen[m] = 1;
-                }
-            }
-        }
-        std::vector<std::uint32_t> column_of;
-        const std::vector<std::uint32_t> columns = order_columns(seen, column_of);
-        stats_.symbolic_seconds += seconds_since(symbolic_start);
-
-        const auto algebra_start = Clock::now();
+        const std::size_t width = step.column_monomials.size() / words_;
         std::vector<SparseRow> pivots;
-        pivots.reserve(reducers.size() + rows.size());
-        std::vector<std::int64_t> pivot_of_column(columns.size(), -1);
-        for (const RowSpec& reducer : reducers) {
-            pivots.push_back(to_sparse(reducer, column_of));
-            std::int64_t& pivot = pivot_of_column[pivots.back().columns.front()];
-            if (pivot >= 0) {
-                return false;  // two reducers for one column: not the recorded matrix
+        pivots.reserve(step.reducers.size() + step.rows.size());
+        std::vector<std::int64_t> pivot_of_column(width, -1);
+        for (const F4Trace::Row& r : step.reducers) {
+            std::optional<SparseRow> row = row_of(r);
+            if (!row) {
+                return false;
             }
-            pivot = static_cast<std::int64_t>(pivots.size() - 1);
+            pivot_of_column[row->columns.front()] = static_cast<std::int64_t>(pivots.size());
+            pivots.push_back(std::move(*row));
         }
-        std::vector<std::uint64_t> acc(columns.size(), 0);
+        std::vector<std::uint64_t> acc(width, 0);
         std::vector<SparseRow> fresh;
-        for (std::size_t k = 0; k < rows.size(); ++k) {
+        for (std::size_t k = 0; k < step.rows.size(); ++k) {
             check_deadline();
-            std::optional<SparseRow> reduced =
-                reduce_row(to_sparse(rows[k], column_of), acc, pivot_of_column, pivots);
-            if (!reduced || !layout_.equal(table_.at(columns[reduced->columns.front()]),
-                                           step.leading[k].data())) {
+            std::optional<SparseRow> row = row_of(step.rows[k]);
+            if (!row) {
+                return false;
+            }
+            std::optional<SparseRow> reduced = reduce_row(*row, acc, pivot_of_column, pivots);
+            if (!reduced || reduced->columns.front() != step.leading[k]) {
                 stats_.linear_algebra_seconds += seconds_since(algebra_start);
                 return false;
             }
             fresh.push_back(std::move(*reduced));
         }
-        stats_.pairs_reduced += rows.size();
+        stats_.pairs_reduced += step.rows.size();
         stats_.linear_algebra_seconds += seconds_since(algebra_start);
-        for (ModularPolynomial& poly : new_elements(fresh, columns)) {
+        for (ModularPolynomial& poly : new_elements(fresh, step.column_monomials)) {
             append_element(std::move(poly));
         }
         return true;
@@ -748,6 +739,8 @@ class F4Engine {
     }
 
     F4Trace* record_;
+    const F4Trace* replaying_ = nullptr;
+    std::vector<char> fits_trace_;  // per element, in a replay: its support is the recorded one
     const MonomialLayout& layout_;
     std::size_t words_;
     PrimeField field_;

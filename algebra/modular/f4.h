@@ -40,19 +40,25 @@ struct F4Options {
 
 // What one run of F4 did, for repeating it modulo other primes (Traverso's tracing, as in
 // Giac and msolve): per step, the rows that made new basis elements and the reducer rows they
-// needed, each as (basis element, multiplier). Most S-halves reduce to zero (cyclic-7: 2066 of
-// 2635) and the pair bookkeeping is the same for every lucky prime; a replay skips both.
+// needed, each as (basis element, its columns in the step's matrix). Most S-halves reduce to
+// zero (cyclic-7: 2066 of 2635) and the pair bookkeeping and symbolic preprocessing are the
+// same for every lucky prime; a replay skips all three and fills the recorded matrices.
 struct F4Trace {
     struct Row {
-        std::uint32_t element;                  // index in the basis as it grows
-        std::vector<std::uint64_t> multiplier;  // packed monomial
+        std::uint32_t element;               // index in the basis as it grows
+        std::vector<std::uint32_t> columns;  // of the element's terms, in order
     };
     struct Step {
-        std::vector<Row> reducers;  // in column order of their leading monomials' first use
-        std::vector<Row> rows;      // reduced in this order, each to a new leading monomial
-        std::vector<std::vector<std::uint64_t>> leading;  // of each row once reduced
+        std::vector<Row> reducers;           // one per pivot column
+        std::vector<Row> rows;               // reduced in this order, each to a new leading column
+        std::vector<std::uint32_t> leading;  // the column each row reduced to
+        std::vector<std::uint64_t> column_monomials;  // packed, column by column, descending
     };
-    std::vector<std::vector<std::uint64_t>> generator_leading;
+    // The supports (packed monomials) of the basis elements as they were made: a replay
+    // whose element has another support (a coefficient vanishing modulo one of the primes)
+    // does not fit the recorded columns.
+    std::vector<std::vector<std::uint64_t>> supports;
+    std::size_t generators = 0;  // non-zero inputs, the first elements
     std::vector<Step> steps;
 };
 
