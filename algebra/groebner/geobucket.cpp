@@ -51,14 +51,16 @@ void GeoBucket::merge(Bucket& target, Bucket& source) {
     const std::size_t w = layout_.words();
     Bucket& out = scratch_;
     out.clear();
-    out.monomials.reserve((target.size() + source.size()) * w);
+    // Monomials are written by index: an insert per term was a call to memmove for 1–2 words.
+    out.monomials.resize((target.size() + source.size()) * w);
     out.coefficients.reserve(target.size() + source.size());
+    std::uint64_t* written = out.monomials.data();
     std::size_t i = target.head, j = source.head;
     const std::size_t i_end = target.coefficients.size(), j_end = source.coefficients.size();
     auto take = [&](Bucket& from, std::size_t& k) {
         out.coefficients.emplace_back(std::move(from.coefficients[k]));
-        const std::uint64_t* m = from.monomials.data() + k * w;
-        out.monomials.insert(out.monomials.end(), m, m + w);
+        std::copy_n(from.monomials.data() + k * w, w, written);
+        written += w;
         ++k;
     };
     while (i < i_end && j < j_end) {
@@ -85,6 +87,7 @@ void GeoBucket::merge(Bucket& target, Bucket& source) {
     while (j < j_end) {
         take(source, j);
     }
+    out.monomials.resize(out.coefficients.size() * w);
     std::swap(target, out);
     source.clear();
 }
@@ -103,9 +106,11 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
     Bucket& target = buckets_[level];
     Bucket& out = scratch_;
     out.clear();
-    out.monomials.reserve((target.size() + length) * w);
+    out.monomials.resize((target.size() + length) * w);
     out.coefficients.reserve(target.size() + length);
+    std::uint64_t* written = out.monomials.data();
     product_.resize(w);
+    fmpz_neg(negated_.get(), b.get());
     std::size_t i = target.head, j = from;
     const std::size_t i_end = target.coefficients.size();
     layout_.multiply(g.monomial(j, w), m, product_.data());
@@ -120,22 +125,23 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
         }
         if (order > 0) {
             out.coefficients.emplace_back(std::move(target.coefficients[i]));
-            const std::uint64_t* t = target.monomials.data() + i * w;
-            out.monomials.insert(out.monomials.end(), t, t + w);
+            std::copy_n(target.monomials.data() + i * w, w, written);
+            written += w;
             ++i;
             continue;
         }
         if (order < 0) {
             out.coefficients.emplace_back();
-            fmpz_mul(out.coefficients.back().get(), g.coefficients[j].get(), b.get());
-            fmpz_neg(out.coefficients.back().get(), out.coefficients.back().get());
-            out.monomials.insert(out.monomials.end(), product_.begin(), product_.end());
+            fmpz_mul(out.coefficients.back().get(), g.coefficients[j].get(), negated_.get());
+            std::copy_n(product_.data(), w, written);
+            written += w;
         } else {
             Integer& c = target.coefficients[i];
             fmpz_submul(c.get(), g.coefficients[j].get(), b.get());
             if (!c.is_zero()) {
                 out.coefficients.emplace_back(std::move(c));
-                out.monomials.insert(out.monomials.end(), product_.begin(), product_.end());
+                std::copy_n(product_.data(), w, written);
+                written += w;
             }
             ++i;
         }
@@ -143,6 +149,7 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
             layout_.multiply(g.monomial(j, w), m, product_.data());
         }
     }
+    out.monomials.resize(out.coefficients.size() * w);
     std::swap(target, out);
     carry(level);
 }

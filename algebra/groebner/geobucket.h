@@ -60,6 +60,7 @@ class GeoBucket {
     std::vector<Bucket> buckets_;
     Bucket scratch_;
     std::vector<std::uint64_t> product_;
+    Integer negated_;  // −b of subtract_multiple
 };
 
 }  // namespace locus::algebra::detail
