@@ -1,6 +1,7 @@
 #include "render/primary_rays.h"
 
 #include <chrono>
+#include <cmath>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -31,6 +32,7 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
             family.expand_row(image_y, row);
         }
         RayPolynomial restriction;
+        double previous_hit = NAN;  // the next pixel's hint
         for (int x = 0; x < width; ++x) {
             const double image_x = x + 0.5;
             const Ray ray = camera.ray(image_x, image_y);
@@ -45,7 +47,8 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
                 RayFamily::restriction(row, image_x, restriction);
             }
             result.hits[p] = tracer.first_hit(ray, interval, uses_family ? &restriction : nullptr,
-                                              family.origin_t());
+                                              family.origin_t(), previous_hit);
+            previous_hit = result.hits[p].status == RootStatus::hit ? result.hits[p].t : NAN;
         }
     };
     tbb::task_arena arena(threads > 0 ? threads : tbb::this_task_arena::max_concurrency());

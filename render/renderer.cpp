@@ -52,6 +52,8 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         std::vector<Vec3> normals(static_cast<std::size_t>(scene.width), Vec3(0.0));
         std::vector<int> work(static_cast<std::size_t>(scene.width), 0);
         std::vector<RayPolynomial> restrictions(surfaces.size());  // one per surface
+        // Per surface, its last hit along the row: the hint for the next sample.
+        std::vector<double> previous_hit(surfaces.size(), NAN);
         for (int sy = 0; sy < k; ++sy) {
             const double image_y = y + (sy + 0.5) / k;
             if (uses_family) {
@@ -77,7 +79,8 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         }
                         const RootResult hit = tracers[s].first_hit(
                             ray, interval, uses_family ? &restriction : nullptr,
-                            families[s].origin_t());
+                            families[s].origin_t(), previous_hit[s]);
+                        previous_hit[s] = hit.status == RootStatus::hit ? hit.t : NAN;
                         row_work += hit.work;
                         work[column] += hit.work;
                         if (hit.status == RootStatus::unknown) {

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <concepts>
+#include <limits>
 #include <string_view>
 #include <variant>
 
@@ -61,9 +62,12 @@ concept RootFinder = requires(const T& finder, const RayPolynomial& f, double lo
 
 // Sturm sequence isolation of the first root, then safeguarded refinement (bracketed Halley
 // steps with a regula falsi fallback).
+// `hint`, when not NaN, is where the first root probably lies (the neighbouring pixel's): see
+// sturm.cpp. The answer is the same first root with or without it.
 struct SturmRootFinder {
     static constexpr std::string_view name = "sturm";
-    RootResult first_root(const RayPolynomial& f, double lo, double hi) const;
+    RootResult first_root(const RayPolynomial& f, double lo, double hi,
+                          double hint = std::numeric_limits<double>::quiet_NaN()) const;
 };
 
 // Descartes' rule of signs on Bernstein coefficients, with de Casteljau subdivision.
@@ -92,9 +96,18 @@ static_assert(RootFinder<CompanionRootFinder>);
 using AnyRootFinder =
     std::variant<SturmRootFinder, BernsteinRootFinder, LaguerreRootFinder, CompanionRootFinder>;
 
+// `hint` reaches the methods that take one (SturmRootFinder); the others ignore it.
 inline RootResult first_root(const AnyRootFinder& finder, const RayPolynomial& f, double lo,
-                             double hi) {
-    return std::visit([&](const auto& m) { return m.first_root(f, lo, hi); }, finder);
+                             double hi, double hint = std::numeric_limits<double>::quiet_NaN()) {
+    return std::visit(
+        [&](const auto& m) {
+            if constexpr (requires { m.first_root(f, lo, hi, hint); }) {
+                return m.first_root(f, lo, hi, hint);
+            } else {
+                return m.first_root(f, lo, hi);
+            }
+        },
+        finder);
 }
 
 }  // namespace locus::render

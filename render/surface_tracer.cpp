@@ -28,8 +28,8 @@ SurfaceTracer::SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod m
     : f_(&f), restrictor_(f.terms()), method_(method), finder_(finder_for(method)), scale_(scale) {}
 
 RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
-                                    const RayPolynomial* restriction,
-                                    double restriction_origin) const {
+                                    const RayPolynomial* restriction, double restriction_origin,
+                                    double hint) const {
     if (interval.is_empty()) {
         return {};
     }
@@ -54,15 +54,15 @@ RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
         break;
     }
     if (restriction != nullptr) {
-        return on_restriction(*restriction, restriction_origin, interval, ray);
+        return on_restriction(*restriction, restriction_origin, interval, ray, hint);
     }
     const double middle = 0.5 * (interval.lo + interval.hi);
     const RayPolynomial computed = restrictor_.restrict_to(ray.at(middle), ray.direction);
-    return on_restriction(computed, middle, interval, ray);
+    return on_restriction(computed, middle, interval, ray, hint);
 }
 
 RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, double origin,
-                                         Interval interval, const Ray& ray) const {
+                                         Interval interval, const Ray& ray, double hint) const {
     const Interval shifted{interval.lo - origin, interval.hi - origin};
     RootResult found;
     if (method_ == TraceMethod::sphere_lipschitz) {
@@ -71,7 +71,7 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
         found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
         return found;
     }
-    found = first_root(finder_, restriction, shifted.lo, shifted.hi);
+    found = first_root(finder_, restriction, shifted.lo, shifted.hi, hint - origin);
     // Reasons are compared as text: two uses of one string literal need not share an address
     // (they did not in the debug build, and every second opinion was silently skipped).
     const std::string_view reason = found.reason;

@@ -32,13 +32,16 @@ class SurfaceTracer {
     // F(restriction_origin + s) = f(ray.at(restriction_origin + s)) as a polynomial in s;
     // otherwise it is computed about the interval's midpoint, where the terms of f have the
     // size of f near the surface rather than at the ray's origin.
+    // `hint`: a t near which the hit probably is (the neighbouring pixel's), or NaN; methods
+    // that use one (SturmRootFinder) are faster with it, and the answer is the same.
     RootResult first_hit(const Ray& ray, Interval interval,
                          const RayPolynomial* restriction = nullptr,
-                         double restriction_origin = 0.0) const;
+                         double restriction_origin = 0.0,
+                         double hint = std::numeric_limits<double>::quiet_NaN()) const;
 
   private:
     RootResult on_restriction(const RayPolynomial& restriction, double origin, Interval interval,
-                              const Ray& ray) const;
+                              const Ray& ray, double hint) const;
 
     const algebra::CompiledPolynomial* f_;
     LineRestrictor restrictor_;

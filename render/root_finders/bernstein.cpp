@@ -41,32 +41,6 @@ constexpr double kCoarseCritical = 1e-6;
 // Total subdivisions allowed for one ray before the method gives up (RootStatus::unknown).
 constexpr int kMaxSubdivisions = 2000;
 
-// 1 / C(n, k) for n, k ≤ kMaxDegree (C(40, 20) ≈ 1.4e11 is exact in a double).
-constexpr auto kInverseBinomial = [] {
-    std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> table{};
-    for (int n = 0; n <= kMaxDegree; ++n) {
-        double c = 1.0;
-        for (int k = 0; k <= n; ++k) {
-            table[n][k] = 1.0 / c;
-            c = c * (n - k) / (k + 1);
-        }
-    }
-    return table;
-}();
-
-// Bernstein coefficients on [0, 1] from power coefficients: b_i = Σ_{k≤i} C(i,k)/C(n,k) g_k,
-// computed with n²/2 additions after scaling by 1/C(n, k).
-void to_bernstein(const Coefficients& g, int n, Coefficients& b) {
-    for (int k = 0; k <= n; ++k) {
-        b[k] = g[k] * kInverseBinomial[n][k];
-    }
-    for (int j = 0; j < n; ++j) {
-        for (int i = n; i > j; --i) {
-            b[i] += b[i - 1];
-        }
-    }
-}
-
 // Splits the piece with coefficients `left` at its midpoint: `left` becomes the left half and
 // `right` the right half (de Casteljau at s = 1/2).
 void split_half(Coefficients& left, Coefficients& right, int n) {
@@ -191,7 +165,7 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
     // The piece being examined: [a, a + 2^-depth] with Bernstein coefficients `piece`; pending
     // right halves wait on the stack, innermost last.
     Coefficients piece;
-    to_bernstein(g, n, piece);
+    detail::to_bernstein(g, n, piece);
     double a = 0.0;
     int depth = 0;
     std::array<Coefficients, kMaxDepth> stack;

@@ -440,9 +440,76 @@ double first_suspected_tangent(const SturmSequence& seq, const detail::UnitRestr
     return best;
 }
 
+// Half-width, in s ∈ [0, 1], of the bracket tried around a hint.
+constexpr double kHintReach = 1.0 / 64.0;
+
+// Bernstein coefficients b[0..n] all of one sign and clear of the rounding noise `touch`:
+// the piece holds no root (G lies in the convex hull of its control polygon).
+bool clear_of_zero(const Coefficients& b, int n, double touch) {
+    for (int i = 0; i <= n; ++i) {
+        if (!(std::abs(b[i]) > touch) || (b[i] < 0.0) != (b[0] < 0.0)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Exactly one sign change among b[0..n], every coefficient clear of `touch`: exactly one root
+// in the piece, a simple one (Descartes' rule of signs in the Bernstein basis bounds the roots
+// counted with multiplicity).
+bool one_sign_change(const Coefficients& b, int n, double touch) {
+    int changes = 0;
+    for (int i = 0; i <= n; ++i) {
+        if (!(std::abs(b[i]) > touch)) {
+            return false;
+        }
+        changes += i > 0 && (b[i] < 0.0) != (b[i - 1] < 0.0) ? 1 : 0;
+    }
+    return changes == 1;
+}
+
+// The first root of G certified around a hint h (the neighbouring pixel's root, in s) without
+// the Sturm chain: with l, r = h ∓ kHintReach, G has no root on [0, l] and exactly one simple
+// root on [l, r], both read off Bernstein coefficients (de Casteljau at l and r) that stay
+// clear of rounding noise; then bracketed Halley on [l, r]. Neighbouring primary rays mostly
+// pass (their first roots move little from pixel to pixel), and these tests cost about a third
+// of building and counting the chain. NaN when a test fails: the counts decide.
+double coherent_root(const detail::UnitRestriction& u, double h, int& work) {
+    const int n = u.degree;
+    if (!(h > kHintReach && h < 1.0 - kHintReach)) {
+        return NAN;
+    }
+    const double l = h - kHintReach;
+    const double r = h + kHintReach;
+    // As in bernstein.cpp: G has max |g_k| = 1, so |G| ≤ n + 1 bounds its rounding scale.
+    const double touch = detail::kTouchFactor * (n + 1) * detail::kEpsilon;
+    // G(r·s) on s ∈ [0, 1] is G on [0, r]; one de Casteljau step at l / r parts [0, l] and
+    // [l, r] (converting on [0, 1] and splitting twice cost half as much again).
+    Coefficients before;
+    Coefficients after;
+    double power = 1.0;
+    for (int k = 0; k <= n; ++k) {
+        after[k] = u.g[k] * power;
+        power *= r;
+    }
+    detail::to_bernstein(after, n, before);
+    detail::split_at(before, after, n, l / r);  // before: [0, l]; after: [l, r]
+    if (!clear_of_zero(before, n, touch) || !one_sign_change(after, n, touch)) {
+        return NAN;
+    }
+    const double gl = detail::horner(u.g.data(), n, l);
+    const double gr = detail::horner(u.g.data(), n, r);
+    if (gl == 0.0 || gr == 0.0 || (gl < 0.0) == (gr < 0.0)) {
+        return NAN;
+    }
+    ++work;
+    return detail::refine_root(u, false, l, r, gl, gr, work, 0.0, true);
+}
+
 }  // namespace
 
-RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double hi) const {
+RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double hi,
+                                       double hint) const {
     const detail::Screening screening = detail::screen(f, lo, hi);
     if (screening.done) {
         return screening.result;
@@ -454,6 +521,12 @@ RootResult SturmRootFinder::first_root(const RayPolynomial& f, double lo, double
     int work = 0;
     double t = NAN;
     const char* flag = "";
+    if (u.degree > 0 && !std::isnan(hint)) {
+        t = coherent_root(u, (hint - lo) / u.w, work);
+        if (!std::isnan(t)) {
+            return detail::hit(t, work);
+        }
+    }
     if (u.degree > 0) {
         SturmSequence seq;
         build_sequence(u.g, u.degree, seq);

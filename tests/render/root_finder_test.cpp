@@ -327,5 +327,55 @@ TYPED_TEST(RootFinderTest, NonFiniteOrInvalidInputIsUnknown) {
     this->expect_unknown(g, 0.0, std::numeric_limits<double>::quiet_NaN(), "invalid interval");
 }
 
+// A hint (the neighbouring pixel's root) only changes how Sturm finds the first root: random
+// products with hints at every root, next to them, between them and anywhere, against the
+// known first root and against the answer without a hint. Hints near a later root while an
+// earlier one exists, and near double roots, must not move the answer.
+TEST(SturmHint, SameFirstRootWithAnyHint) {
+    const SturmRootFinder sturm;
+    int hinted_hits = 0;
+    int shortcuts = 0;  // answers that skipped the chain (less work): the path is exercised
+    for (int seed = 0; seed < seed_count(600); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> position(-2.0, 2.0);
+        std::vector<double> roots;
+        const int real_count = std::uniform_int_distribution<int>(1, 6)(rng);
+        while (static_cast<int>(roots.size()) < real_count) {
+            const double r = position(rng);
+            if (std::all_of(roots.begin(), roots.end(),
+                            [r](double q) { return std::abs(r - q) >= 0.05; })) {
+                roots.push_back(r);
+            }
+        }
+        if (seed % 3 == 0) {
+            roots.push_back(roots.front());  // a double root (a tangent)
+        }
+        const RayPolynomial f = from_roots(roots, {{position(rng), 0.3}});
+        const double lo = -2.5, hi = 2.5;
+        const RootResult plain = sturm.first_root(f, lo, hi);
+        ASSERT_EQ(plain.status, RootStatus::hit);
+        std::vector<double> hints = {lo + 1e-3, hi - 1e-3, 0.0};
+        for (double r : roots) {
+            for (double offset : {0.0, 1e-6, -1e-6, 0.01, -0.01, 0.07, -0.07}) {
+                hints.push_back(r + offset);
+            }
+        }
+        for (int k = 0; k < 8; ++k) {
+            hints.push_back(std::uniform_real_distribution<double>(lo, hi)(rng));
+        }
+        for (double hint : hints) {
+            SCOPED_TRACE("hint " + std::to_string(hint));
+            const RootResult hinted = sturm.first_root(f, lo, hi, hint);
+            ASSERT_EQ(hinted.status, RootStatus::hit);
+            EXPECT_NEAR(hinted.t, plain.t, 1e-7);
+            ++hinted_hits;
+            shortcuts += hinted.work < plain.work ? 1 : 0;
+        }
+    }
+    EXPECT_GT(hinted_hits, 1000);
+    EXPECT_GT(shortcuts, hinted_hits / 20);
+}
+
 }  // namespace
 }  // namespace locus::render

@@ -226,6 +226,44 @@ inline bool map_to_unit_interval(const RayPolynomial& f, int degree, double lo, 
     return true;
 }
 
+// 1 / C(n, k) for n, k ≤ kMaxDegree (C(40, 20) ≈ 1.4e11 is exact in a double).
+inline constexpr auto kInverseBinomial = [] {
+    std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> table{};
+    for (int n = 0; n <= kMaxDegree; ++n) {
+        double c = 1.0;
+        for (int k = 0; k <= n; ++k) {
+            table[n][k] = 1.0 / c;
+            c = c * (n - k) / (k + 1);
+        }
+    }
+    return table;
+}();
+
+// Bernstein coefficients on [0, 1] from power coefficients: b_i = Σ_{k≤i} C(i,k)/C(n,k) g_k,
+// computed with n²/2 additions after scaling by 1/C(n, k).
+inline void to_bernstein(const Coefficients& g, int n, Coefficients& b) {
+    for (int k = 0; k <= n; ++k) {
+        b[k] = g[k] * kInverseBinomial[n][k];
+    }
+    for (int j = 0; j < n; ++j) {
+        for (int i = n; i > j; --i) {
+            b[i] += b[i - 1];
+        }
+    }
+}
+
+// De Casteljau at s ∈ (0, 1): the piece `left` (Bernstein coefficients on some [a, b]) becomes
+// its part on [a, a + s·(b − a)] and `right` the rest.
+inline void split_at(Coefficients& left, Coefficients& right, int n, double s) {
+    std::copy(left.begin(), left.begin() + n + 1, right.begin());
+    for (int k = 1; k <= n; ++k) {
+        for (int i = 0; i <= n - k; ++i) {
+            right[i] += s * (right[i + 1] - right[i]);
+        }
+        left[k] = right[0];
+    }
+}
+
 // Required width of the final bracket in s ∈ [0, 1] for an interval of width w.
 inline double unit_tolerance(double w) {
     return std::max(kRootTolerance * std::max(1.0, w) / w, 8.0 * kEpsilon);
