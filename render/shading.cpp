@@ -108,6 +108,29 @@ double Shader::ambient_occlusion(const Vec3& point, const Vec3& normal, std::uin
     return static_cast<double>(open) / samples;
 }
 
+namespace {
+
+// x^e, by squaring when the Blinn–Phong exponent is a whole number (the default 48 is):
+// std::pow was 3 % of a degree-6 frame, two calls per hit.
+double specular_power(double x, double e) {
+    if (e >= 0.0 && e <= 1024.0 && e == std::floor(e)) {
+        auto n = static_cast<unsigned>(e);
+        double result = 1.0;
+        double square = x;
+        while (n != 0) {
+            if ((n & 1u) != 0) {
+                result *= square;
+            }
+            square *= square;
+            n >>= 1u;
+        }
+        return result;
+    }
+    return std::pow(x, e);
+}
+
+}  // namespace
+
 ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed) const {
     const ShadedSurface& surface = surfaces_[index];
     const Vec3 point = ray.at(t);
@@ -149,7 +172,7 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
             }
         }
         const Vec3 half = glm::normalize(to_light + view);
-        const double highlight = std::pow(std::max(0.0, glm::dot(normal, half)), m.shininess);
+        const double highlight = specular_power(std::max(0.0, glm::dot(normal, half)), m.shininess);
         color += (visible * light.intensity) * light.color *
                  (m.diffuse * cosine * base + m.specular * highlight * Vec3(1.0));
     }
