@@ -24,7 +24,7 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
     const SurfaceTracer tracer(f, method, scale * tolerance_factor);
     const bool uses_family = method != TraceMethod::sphere_gradient &&
                              method != TraceMethod::exact && f.degree() <= kMaxFamilyDegree;
-    const RayFamily family(f, camera, bounding_sphere(region).center, width);
+    const RayFamily family(f, camera, bounding_sphere(region).center, width, height);
     auto trace_row = [&](int y) {
         RowExpansion row;
         const double image_y = y + 0.5;

@@ -7,12 +7,14 @@
 namespace locus::render {
 
 RayFamily::RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera, const Vec3& center,
-                     int width)
+                     int width, int height)
     : camera_(&camera),
       restrictor_(f.terms()),
       plane_t_(glm::dot(center - camera.eye(), camera.forward())),
       center_x_(0.5 * width),
-      half_width_(0.5 * width) {
+      half_width_(0.5 * width),
+      center_y_(0.5 * height),
+      half_height_(0.5 * height) {
     const int nodes = restrictor_.degree() + 1;
     chebyshev_powers_.resize(static_cast<std::size_t>(nodes));
     cosines_.resize(static_cast<std::size_t>(nodes));
@@ -34,9 +36,65 @@ RayFamily::RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
                 std::cos(std::numbers::pi * m * (j + 0.5) / nodes);
         }
     }
+    if (restrictor_.degree() < 0 || restrictor_.degree() > kMaxFamilyDegree) {
+        return;  // above kMaxFamilyDegree rows are expanded directly (if at all)
+    }
+    // Rows at the Chebyshev nodes in v, then each coefficient interpolated in v.
+    const auto n_nodes = static_cast<std::size_t>(nodes);
+    std::vector<RowExpansion> rows(n_nodes);
+    for (int j = 0; j < nodes; ++j) {
+        const double v = nodes > 1 ? cosines_[1][static_cast<std::size_t>(j)] : 0.0;
+        expand_row_directly(center_y_ + v * half_height_, rows[static_cast<std::size_t>(j)]);
+    }
+    by_v_.assign(n_nodes * n_nodes * n_nodes, 0.0);
+    for (int k = 0; k < nodes; ++k) {
+        for (int i = 0; i < nodes; ++i) {
+            double* power = by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes;
+            for (int m = 0; m < nodes; ++m) {
+                const auto& cosine = cosines_[static_cast<std::size_t>(m)];
+                double chebyshev = 0.0;
+                for (int j = 0; j < nodes; ++j) {
+                    chebyshev += rows[static_cast<std::size_t>(j)].row[k][i] * cosine[j];
+                }
+                chebyshev *= (m == 0 ? 1.0 : 2.0) / nodes;
+                const auto& t = chebyshev_powers_[static_cast<std::size_t>(m)];
+                for (int e = 0; e <= m; ++e) {
+                    power[e] += chebyshev * t[e];
+                }
+            }
+        }
+    }
 }
 
 void RayFamily::expand_row(double y, RowExpansion& out) const {
+    const int n = restrictor_.degree();
+    const int nodes = n + 1;
+    out.degree = n;
+    out.center_x = center_x_;
+    out.inverse_half_width = 1.0 / half_width_;
+    if (n < 0) {
+        return;
+    }
+    if (by_v_.empty()) {
+        expand_row_directly(y, out);
+        return;
+    }
+    const double v = (y - center_y_) / half_height_;
+    const auto n_nodes = static_cast<std::size_t>(nodes);
+    for (int k = 0; k < nodes; ++k) {
+        for (int i = 0; i < nodes; ++i) {
+            const double* power =
+                by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes;
+            double value = power[n];
+            for (int m = n - 1; m >= 0; --m) {
+                value = value * v + power[m];
+            }
+            out.row[k][i] = value;
+        }
+    }
+}
+
+void RayFamily::expand_row_directly(double y, RowExpansion& out) const {
     const int n = restrictor_.degree();
     const int nodes = n + 1;
     out.degree = n;

@@ -26,7 +26,7 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         tracers.emplace_back(surfaces[i], scene.options.method, scale);
         families.emplace_back(surfaces[i], camera, bounding_sphere(scene.surfaces[i].clip).center,
-                              scene.width);
+                              scene.width, scene.height);
     }
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         shaded.push_back({&tracers[i], scene.surfaces[i].clip, scene.surfaces[i].material});

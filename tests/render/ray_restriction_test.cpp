@@ -77,7 +77,7 @@ TEST(RayFamily, MatchesTheGeneralRestrictionOfEachPrimaryRay) {
         const algebra::CompiledPolynomial f =
             algebra::compile_surface(random_equation(rng, 2 + seed % 9));
         const Camera camera({{1.0, 2.0, 5.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 40.0}, 64, 48);
-        const RayFamily family(f, camera, {0.1, -0.2, 0.3}, 64);
+        const RayFamily family(f, camera, {0.1, -0.2, 0.3}, 64, 48);
         const LineRestrictor restrictor(f.terms());
         RowExpansion row;
         for (double y : {0.5, 17.25, 47.5}) {

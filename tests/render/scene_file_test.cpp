@@ -92,7 +92,8 @@ TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
     EXPECT_EQ(error_of("[render]\nmethod = \"magic\"\n[[surface]]\nequation = \"x\"\n"),
               "method 'magic': unknown method; expected one of sturm, bernstein, laguerre, eigen, "
               "sphere-gradient, sphere-lipschitz, exact");
-    EXPECT_EQ(error_of("[image]\nwidth = 10\n"), "surface: a scene needs at least one [[surface]] or [[object]]");
+    EXPECT_EQ(error_of("[image]\nwidth = 10\n"),
+              "surface: a scene needs at least one [[surface]] or [[object]]");
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\nparam = \"a.param\"\n"),
               "line 1, column 1: surface[1]: give exactly one of 'equation' and 'param'");
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\nclip = \"cone\"\n"),
