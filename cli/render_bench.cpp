@@ -8,11 +8,13 @@
 // differs by more than 1e-6 × the clip radius. When surf (Debian's surf-alggeo) is installed,
 // it draws the same surface at the same size in the same run (its own camera and clipping,
 // start-up excluded) for a speed reference, set beside `render s`: the whole picture as
-// `locus render` makes it (sturm, shading without shadows, one sample, all cores).
+// `locus render` makes it (sturm, shading without shadows, one sample, all cores). Both are the
+// median of repeated runs, which shrugs off runs slowed by other work on a shared machine.
 #include "cli/render_bench.h"
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -39,6 +41,12 @@ std::vector<SuiteSurface> read_suite(const std::string& path) {
     } catch (const Error& e) {
         throw CommandFailure(exit_input, path + ": " + e.what());
     }
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t middle = values.size() / 2;
+    return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 // Seconds surf takes to draw the surface at size×size (start-up measured with an empty script
@@ -73,23 +81,24 @@ double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
         std::filesystem::remove(script);
         return status == 0 ? seconds : -1.0;
     };
-    // Mean of repeated runs (at least 3, at least 0.2 s), as for locus' own figures: a single
-    // surf run at 256² takes a few milliseconds, below the noise of one process start.
-    auto mean_of = [&](bool draw) {
+    // Median of repeated runs (at least 5, at least 0.2 s), as for locus' own figures: a single
+    // surf run at 256² takes a few milliseconds, below the noise of one process start, and on a
+    // shared machine single runs are sometimes slowed several-fold; the median ignores those.
+    auto median_of = [&](bool draw) {
+        std::vector<double> times;
         double sum = 0.0;
-        int runs = 0;
         do {
             const double seconds = run(draw);
             if (seconds < 0) {
                 return -1.0;
             }
+            times.push_back(seconds);
             sum += seconds;
-            ++runs;
-        } while (runs < 3 || (sum < 0.2 && runs < 50));
-        return sum / runs;
+        } while (times.size() < 5 || (sum < 0.2 && times.size() < 50));
+        return median(times);
     };
-    const double startup = mean_of(false);
-    const double total = mean_of(true);
+    const double startup = median_of(false);
+    const double total = median_of(true);
     const bool drew = std::filesystem::exists(image);
     std::filesystem::remove(image);
     if (startup < 0 || total < 0 || !drew) {
@@ -203,15 +212,15 @@ int run_render_bench(const RenderBenchArgs& args) {
         // shadows, one sample, all cores): the figure to set beside surf's.
         scene.options.shadows = false;
         const std::vector<algebra::CompiledPolynomial> compiled = {f};
-        double render_seconds = 0.0;
-        int render_runs = 0;
+        std::vector<double> frames;
+        double render_total = 0.0;
         do {
             render::RenderStats stats;
             render::render(scene, compiled, {}, &stats);
-            render_seconds += stats.seconds;
-            ++render_runs;
-        } while (render_seconds < args.min_seconds && render_runs < 50);
-        render_seconds /= render_runs;
+            frames.push_back(stats.seconds);
+            render_total += stats.seconds;
+        } while (frames.size() < 5 || (render_total < args.min_seconds && frames.size() < 50));
+        const double render_seconds = median(frames);
         const double tolerance = 1e-6 * s.clip_radius;
         const std::vector<double> reference_shade = shade_image(f, camera, reference, args.size);
         for (const Setting& setting : settings_of(methods)) {
