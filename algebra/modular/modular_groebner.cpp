@@ -77,6 +77,21 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
         for (std::size_t e = 0; e < basis.size(); ++e) {
             const ModularPolynomial& g = basis[e];
             LiftedElement& old = group.elements[e];
+            // The usual case: the same monomials as before, combined in place (rebuilding
+            // the element allocated every term's monomial again for every prime).
+            bool same_support = old.size() == g.size();
+            for (std::size_t i = 0; same_support && i < g.size(); ++i) {
+                same_support = std::equal(old[i].monomial.begin(), old[i].monomial.end(),
+                                          g.monomial(i, words));
+            }
+            if (same_support) {
+                for (std::size_t i = 0; i < g.size(); ++i) {
+                    fmpz_CRT_ui(combined.get(), old[i].residue.get(), group.modulus.get(),
+                                g.coefficients[i], p, 1);
+                    fmpz_swap(old[i].residue.get(), combined.get());
+                }
+                continue;
+            }
             LiftedElement merged;
             merged.reserve(std::max(old.size(), g.size()));
             std::size_t a = 0, b = 0;
