@@ -9,6 +9,13 @@
 #include "algebra/error.h"
 #include "render/shading.h"
 
+#ifdef LOCUS_IMAGE_LINKED
+// Sanitizer builds link the image writer in (render/CMakeLists.txt says why).
+extern "C" int locus_write_image_file(const char* path, int width, int height, int channels,
+                                      const void* data, int data_is_float, int file_is_half,
+                                      char* error, std::size_t error_size);
+#endif
+
 namespace locus::render {
 
 namespace {
@@ -16,6 +23,11 @@ namespace {
 using WriteFunction = int (*)(const char*, int, int, int, const void*, int, int, char*,
                               std::size_t);
 
+#ifdef LOCUS_IMAGE_LINKED
+WriteFunction image_writer() {
+    return &locus_write_image_file;
+}
+#else
 // The OpenImageIO module (render/image_file_module.cpp), loaded once on first use.
 WriteFunction image_writer() {
     static const WriteFunction writer = [] {
@@ -33,6 +45,7 @@ WriteFunction image_writer() {
     }
     return writer;
 }
+#endif
 
 void write_channels(const std::string& path, int width, int height, int channels, const void* data,
                     bool data_is_float, bool file_is_half) {
