@@ -494,8 +494,17 @@ double coherent_root(const detail::UnitRestriction& u, double h, int& work) {
     }
     detail::to_bernstein(after, n, before);
     detail::split_at(before, after, n, l / r);  // before: [0, l]; after: [l, r]
-    if (!clear_of_zero(before, n, touch) || !one_sign_change(after, n, touch)) {
+    if (!one_sign_change(after, n, touch)) {
         return NAN;
+    }
+    if (!clear_of_zero(before, n, touch)) {
+        // The polygon on a long [0, l] is loose where F comes close to zero without a root
+        // (thin walls): halved once, it often clears.
+        Coefficients second;
+        detail::split_at(before, second, n, 0.5);
+        if (!clear_of_zero(before, n, touch) || !clear_of_zero(second, n, touch)) {
+            return NAN;
+        }
     }
     const double gl = detail::horner(u.g.data(), n, l);
     const double gr = detail::horner(u.g.data(), n, r);
