@@ -73,8 +73,10 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
     }
     found = first_root(finder_, restriction, shifted.lo, shifted.hi, hint - origin);
     // Reasons are compared as text: two uses of one string literal need not share an address
-    // (they did not in the debug build, and every second opinion was silently skipped).
-    const std::string_view reason = found.reason;
+    // (they did not in the debug build, and every second opinion was silently skipped). Most
+    // answers carry no reason, and measuring one (strlen) was 1 % of a sextic frame.
+    const std::string_view reason =
+        found.reason != nullptr && found.reason[0] != '\0' ? found.reason : std::string_view{};
     const bool near_multiple = reason == kNearCommonFactor;
     if (found.status != RootStatus::unknown && (near_multiple || reason == kSecondOpinion)) {
         // Multiple or very close roots: Laguerre with deflation separates what the Sturm
