@@ -63,6 +63,10 @@ struct GroebnerOptions {
     std::size_t max_basis_size = 0;
     // Called after every S-pair with the state so far (for progress bars; throttle inside).
     std::function<void(const GroebnerProgress&)> progress;
+    // For the multi-modular route of groebner_automatic: certify its result (false: the result
+    // is probabilistic), on this many threads (Buchberger itself is sequential).
+    bool certify = true;
+    int threads = 1;
 };
 
 struct GroebnerResult {

@@ -1,5 +1,12 @@
 #include "algebra/groebner/verify.h"
 
+#include <atomic>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include "algebra/division.h"
 #include "algebra/error.h"
 #include "algebra/groebner/pair_criteria.h"
@@ -63,7 +70,8 @@ BasisCheck check_groebner_basis(std::span<const Polynomial> basis,
 
 BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                                   std::span<const Polynomial> generators,
-                                  std::optional<std::chrono::steady_clock::time_point> deadline) {
+                                  std::optional<std::chrono::steady_clock::time_point> deadline,
+                                  int threads) {
     BasisCheck check;
     if (basis.empty()) {
         for (const Polynomial& g : generators) {
@@ -103,17 +111,55 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                 return check;
             }
         }
-        for (const detail::CriticalPair& pair : pairs) {
-            ++check.pairs_checked;
-            const detail::IntegerPolynomial s = reducer.s_polynomial(
+        // Whether the S-polynomial of `pair` reduces to zero, with the given reducer.
+        auto pair_reduces = [&](detail::Reducer& r, const detail::CriticalPair& pair,
+                                detail::ReductionCounts& pair_steps) {
+            const detail::IntegerPolynomial s = r.s_polynomial(
                 elements[pair.first].poly, elements[pair.second].poly, pair.lcm.data(), pair.sugar);
-            if (!reducer.reduce(s, elements, steps, false).empty()) {
-                check.ok = false;
-                check.failure = "S-polynomial of elements " + std::to_string(pair.first + 1) +
-                                " and " + std::to_string(pair.second + 1) +
-                                " does not reduce to zero";
-                return check;
+            return r.reduce(s, elements, pair_steps, false).empty();
+        };
+        std::size_t failed = pairs.size();  // the first pair, in order, that does not reduce
+        if (threads <= 1 || pairs.size() < 2) {
+            for (std::size_t k = 0; k < pairs.size() && failed == pairs.size(); ++k) {
+                if (!pair_reduces(reducer, pairs[k], steps)) {
+                    failed = k;
+                }
             }
+        } else {
+            std::atomic<std::size_t> first_failure{pairs.size()};
+            tbb::enumerable_thread_specific<detail::Reducer> reducers([&] {
+                detail::Reducer r(layout);
+                r.set_deadline(deadline);
+                return r;
+            });
+            tbb::task_arena arena(threads);
+            arena.execute([&] {
+                tbb::parallel_for(
+                    tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                        detail::Reducer& local = reducers.local();
+                        detail::ReductionCounts local_steps;
+                        for (std::size_t k = range.begin(); k < range.end(); ++k) {
+                            // Pairs after a known failure need no check.
+                            if (k > first_failure.load(std::memory_order_relaxed)) {
+                                return;
+                            }
+                            if (!pair_reduces(local, pairs[k], local_steps)) {
+                                std::size_t seen = first_failure.load();
+                                while (k < seen && !first_failure.compare_exchange_weak(seen, k)) {
+                                }
+                            }
+                        }
+                    });
+            });
+            failed = first_failure.load();
+        }
+        check.pairs_checked = failed < pairs.size() ? failed + 1 : pairs.size();
+        if (failed < pairs.size()) {
+            check.ok = false;
+            check.failure = "S-polynomial of elements " + std::to_string(pairs[failed].first + 1) +
+                            " and " + std::to_string(pairs[failed].second + 1) +
+                            " does not reduce to zero";
         }
     } catch (const detail::ReductionInterrupted&) {
         throw Timeout("certification of the modular result");

@@ -348,7 +348,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
             if (options.certify) {
                 const auto certify_start = Clock::now();
                 const BasisCheck check =
-                    certify_groebner_basis(candidate, inputs, options.deadline);
+                    certify_groebner_basis(candidate, inputs, options.deadline, options.threads);
                 s.certify_seconds += seconds_since(certify_start);
                 if (!check.ok) {
                     // Stable but wrong. Replays of an unlucky first prime would keep making
@@ -409,6 +409,8 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     }
     ModularOptions modular_options;
     modular_options.deadline = options.deadline;
+    modular_options.threads = options.threads;
+    modular_options.certify = options.certify;
     try {
         GroebnerResult modular = modular_groebner(generators, modular_options, stats);
         modular.stats.seconds += result.stats.seconds;

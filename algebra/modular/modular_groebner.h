@@ -33,6 +33,8 @@ struct ModularOptions {
     std::size_t max_primes = 10000;
     // Repeat the first prime's F4 on the others (f4_replay) instead of running it afresh.
     bool trace = true;
+    // Threads for the certification's S-pairs (verify.h); 1 keeps everything on this thread.
+    int threads = 1;
 };
 
 struct ModularStats {

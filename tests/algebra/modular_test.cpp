@@ -203,8 +203,37 @@ TEST(Modular, CertificationRejectsACorruptedBasis) {
     }
     last = fixed;
     EXPECT_FALSE(check_groebner_basis(corrupted, ideal.generators).ok);
-    // The certification the modular route runs (fraction-free, Gebauer–Möller pairs) too.
-    EXPECT_FALSE(certify_groebner_basis(corrupted, ideal.generators).ok);
+    // The certification the modular route runs (fraction-free, Gebauer–Möller pairs) too, and
+    // on several threads it reports the same first failing pair.
+    const BasisCheck single = certify_groebner_basis(corrupted, ideal.generators);
+    EXPECT_FALSE(single.ok);
+    const BasisCheck threaded =
+        certify_groebner_basis(corrupted, ideal.generators, std::nullopt, 3);
+    EXPECT_FALSE(threaded.ok);
+    EXPECT_EQ(threaded.failure, single.failure);
+    EXPECT_EQ(threaded.pairs_checked, single.pairs_checked);
+}
+
+TEST(Modular, ThreadedCertificationAgreesWithOneThread) {
+    for (const char* name : {"cyclic5", "katsura6", "eco6"}) {
+        const IdealFile ideal = parse_ideal_file(
+            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        const GroebnerResult r = modular_groebner(ideal.generators);
+        const BasisCheck single = certify_groebner_basis(r.basis, ideal.generators);
+        const BasisCheck threaded =
+            certify_groebner_basis(r.basis, ideal.generators, std::nullopt, 2);
+        EXPECT_TRUE(single.ok) << name;
+        EXPECT_TRUE(threaded.ok) << name;
+        EXPECT_EQ(threaded.pairs_checked, single.pairs_checked) << name;
+        // A basis missing its last element is not a Gröbner basis of the same ideal: both
+        // reject it, at the same pair or generator.
+        const std::vector<Polynomial> shorter(r.basis.begin(), r.basis.end() - 1);
+        const BasisCheck single_short = certify_groebner_basis(shorter, ideal.generators);
+        const BasisCheck threaded_short =
+            certify_groebner_basis(shorter, ideal.generators, std::nullopt, 2);
+        EXPECT_FALSE(single_short.ok) << name;
+        EXPECT_EQ(threaded_short.failure, single_short.failure) << name;
+    }
 }
 
 TEST(Modular, F4ModuloAPrimeIsTheRationalBasisReduced) {

@@ -30,6 +30,12 @@ expect "groebner reads standard input" 0 "" -- \
     bash -c "\"$locus\" groebner - < $known/katsura4_grevlex.ideal | diff - $known/katsura4_grevlex.expected"
 expect "check verifies" 0 "check: ok" -- "$locus" groebner $known/cyclic4_grevlex.ideal --check
 expect "stats go to stderr" 0 "reductions to zero" -- "$locus" groebner $known/cyclic4_grevlex.ideal --stats
+expect "modular on two threads certifies" 0 "certified over Q" -- \
+    "$locus" groebner $known/cyclic4_grevlex.ideal --algorithm modular --threads 2 --stats
+expect "auto honours --no-certify when it goes modular" 0 "NOT certified" -- \
+    "$locus" groebner bench/data/cyclic6.ideal --no-certify --stats
+expect "groebner: negative --threads" 2 "--threads -1: expected a positive count" -- \
+    "$locus" groebner $known/cyclic4_grevlex.ideal --threads -1
 expect "order override" 0 "" -- \
     bash -c "\"$locus\" groebner $known/cyclic4_grevlex.ideal --order lex | diff - $known/cyclic4_lex.expected"
 expect "singular format" 0 "ring r = 0, (x0,x1,x2,x3), dp;" -- \
