@@ -43,46 +43,52 @@ RayFamily::RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
     const auto n_nodes = static_cast<std::size_t>(nodes);
     std::vector<RowExpansion> rows(n_nodes);
     for (int j = 0; j < nodes; ++j) {
-        const double v = nodes > 1 ? cosines_[1][static_cast<std::size_t>(j)] : 0.0;
-        expand_row_directly(center_y_ + v * half_height_, rows[static_cast<std::size_t>(j)]);
+        expand_row_directly(center_y_ + node(j) * half_height_, rows[static_cast<std::size_t>(j)]);
     }
     by_v_.assign(n_nodes * n_nodes * n_nodes, 0.0);
     for (int k = 0; k < nodes; ++k) {
         for (int i = 0; i < nodes; ++i) {
-            double* power = by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes;
-            for (int m = 0; m < nodes; ++m) {
-                const auto& cosine = cosines_[static_cast<std::size_t>(m)];
-                double chebyshev = 0.0;
-                for (int j = 0; j < nodes; ++j) {
-                    chebyshev += rows[static_cast<std::size_t>(j)].row[k][i] * cosine[j];
-                }
-                chebyshev *= (m == 0 ? 1.0 : 2.0) / nodes;
-                const auto& t = chebyshev_powers_[static_cast<std::size_t>(m)];
-                for (int e = 0; e <= m; ++e) {
-                    power[e] += chebyshev * t[e];
-                }
-            }
+            interpolate([&](int j) { return rows[static_cast<std::size_t>(j)].row[k][i]; },
+                        by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes);
+        }
+    }
+}
+
+double RayFamily::node(int j) const {
+    return restrictor_.degree() > 0 ? cosines_[1][static_cast<std::size_t>(j)] : 0.0;
+}
+
+template <class ValueAtNode>
+void RayFamily::interpolate(ValueAtNode value_at_node, double* power) const {
+    const int nodes = restrictor_.degree() + 1;
+    std::fill_n(power, nodes, 0.0);
+    for (int m = 0; m < nodes; ++m) {
+        const auto& cosine = cosines_[static_cast<std::size_t>(m)];
+        double chebyshev = 0.0;
+        for (int j = 0; j < nodes; ++j) {
+            chebyshev += value_at_node(j) * cosine[j];
+        }
+        chebyshev *= (m == 0 ? 1.0 : 2.0) / nodes;
+        const auto& t = chebyshev_powers_[static_cast<std::size_t>(m)];
+        for (int e = 0; e <= m; ++e) {
+            power[e] += chebyshev * t[e];
         }
     }
 }
 
 void RayFamily::expand_row(double y, RowExpansion& out) const {
     const int n = restrictor_.degree();
-    const int nodes = n + 1;
-    out.degree = n;
-    out.center_x = center_x_;
-    out.inverse_half_width = 1.0 / half_width_;
-    if (n < 0) {
-        return;
-    }
     if (by_v_.empty()) {
         expand_row_directly(y, out);
         return;
     }
+    out.degree = n;
+    out.center_x = center_x_;
+    out.inverse_half_width = 1.0 / half_width_;
     const double v = (y - center_y_) / half_height_;
-    const auto n_nodes = static_cast<std::size_t>(nodes);
-    for (int k = 0; k < nodes; ++k) {
-        for (int i = 0; i < nodes; ++i) {
+    const auto n_nodes = static_cast<std::size_t>(n + 1);
+    for (int k = 0; k <= n; ++k) {
+        for (int i = 0; i <= n; ++i) {
             const double* power =
                 by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes;
             double value = power[n];
@@ -96,32 +102,18 @@ void RayFamily::expand_row(double y, RowExpansion& out) const {
 
 void RayFamily::expand_row_directly(double y, RowExpansion& out) const {
     const int n = restrictor_.degree();
-    const int nodes = n + 1;
     out.degree = n;
     out.center_x = center_x_;
     out.inverse_half_width = 1.0 / half_width_;
-    // values[j]: the restriction along the ray at node u_j (cosines_[1][j]).
+    // values[j]: the restriction along the ray at node u_j.
     std::array<RayPolynomial, kMaxDegree + 1> values;
-    for (int j = 0; j < nodes; ++j) {
-        const double u = nodes > 1 ? cosines_[1][j] : 0.0;
-        const Vec3 d = camera_->direction(center_x_ + u * half_width_, y);
+    for (int j = 0; j <= n; ++j) {
+        const Vec3 d = camera_->direction(center_x_ + node(j) * half_width_, y);
         values[j] = restrictor_.restrict_to(camera_->eye() + plane_t_ * d, d);
     }
     for (int k = 0; k <= n; ++k) {
-        auto& power = out.row[k];
-        std::fill_n(power.begin(), nodes, 0.0);
-        for (int m = 0; m < nodes; ++m) {
-            const auto& cosine = cosines_[static_cast<std::size_t>(m)];
-            double chebyshev = 0.0;
-            for (int j = 0; j < nodes; ++j) {
-                chebyshev += values[j].c[k] * cosine[j];
-            }
-            chebyshev *= (m == 0 ? 1.0 : 2.0) / nodes;
-            const auto& t = chebyshev_powers_[static_cast<std::size_t>(m)];
-            for (int i = 0; i <= m; ++i) {
-                power[i] += chebyshev * t[i];
-            }
-        }
+        interpolate([&](int j) { return values[static_cast<std::size_t>(j)].c[k]; },
+                    out.row[k].data());
     }
 }
 

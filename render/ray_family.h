@@ -81,6 +81,13 @@ class RayFamily {
     std::vector<double> by_v_;
     // The row at y by restricting f along n + 1 rays of it (the frame's interpolation nodes).
     void expand_row_directly(double y, RowExpansion& out) const;
+    // Chebyshev node j in [−1, 1] (0 for a constant f).
+    double node(int j) const;
+    // power[0..n]: the coefficients, in powers of the node variable, of the polynomial of
+    // degree ≤ n through value_at_node(j) at the n + 1 nodes (discrete cosine transform to
+    // Chebyshev coefficients, then to powers: see chebyshev_powers_).
+    template <class ValueAtNode>
+    void interpolate(ValueAtNode value_at_node, double* power) const;
 };
 
 }  // namespace locus::render

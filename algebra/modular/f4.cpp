@@ -175,7 +175,7 @@ class F4Engine {
     // In a replay, also notes whether its support is the recorded one.
     void append_element(ModularPolynomial poly) {
         const std::size_t h = basis_.size();
-        fits_trace_.push_back(h < replaying_->supports.size() &&
+        fits_trace_.push_back(replaying_ != nullptr && h < replaying_->supports.size() &&
                               poly.monomials == replaying_->supports[h]);
         basis_.push_back({std::move(poly), 0, false, 0});
         basis_[h].mask = layout_.divisibility_mask(lead(h));

@@ -286,10 +286,12 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                                             [](const Group& g) { return g.candidate.has_value(); });
         auto run_f4 = [&](const std::vector<ModularPolynomial>& polys, const MonomialLayout& l) {
             if (tracing && trace && !confirming) {
+                const auto replay_start = Clock::now();
                 std::optional<std::vector<ModularPolynomial>> replayed =
                     modular::f4_replay(*trace, polys, l, field, f4_options, &f4_stats);
                 if (replayed) {
                     ++s.replayed;
+                    s.replay_seconds += seconds_since(replay_start);
                     return std::move(*replayed);
                 }
                 ++s.replays_refused;
