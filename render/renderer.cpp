@@ -1,6 +1,5 @@
 #include "render/renderer.h"
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -42,7 +41,7 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
 
     const int k = scene.options.samples;
-    std::atomic<long> hits{0}, unknown{0}, primary_work{0};
+    detail::FrameCounters frame;
 
     auto render_row = [&](int y) {
         std::vector<RowExpansion> rows(surfaces.size());
@@ -112,28 +111,15 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         const double weight = 1.0 / (k * k);
         for (int x = 0; x < scene.width; ++x) {
             const auto column = static_cast<std::size_t>(x);
-            const std::size_t p = static_cast<std::size_t>(y) * scene.width + column;
-            for (int c = 0; c < 3; ++c) {
-                image.color[3 * p + c] = static_cast<float>(sums[column][c] * weight);
-                image.normal[3 * p + c] = static_cast<float>(normals[column][c]);
-            }
-            image.depth[p] = static_cast<float>(nearest[column]);
-            image.work[p] = static_cast<float>(work[column]);
+            detail::store_pixel(image, static_cast<std::size_t>(y) * scene.width + column,
+                                sums[column] * weight, normals[column], nearest[column],
+                                work[column]);
         }
-        hits += row_hits;
-        unknown += row_unknown;
-        primary_work += row_work;
+        frame.add_row(row_hits, row_unknown, row_work);
     };
 
     detail::for_each_row(scene.height, execution, render_row);
-    if (stats != nullptr) {
-        stats->seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats->primary_rays = static_cast<long>(pixels) * k * k;
-        stats->hits = hits;
-        stats->unknown = unknown;
-        stats->primary_work = primary_work;
-    }
+    frame.report(stats, start, static_cast<long>(pixels) * k * k);
     return image;
 }
 

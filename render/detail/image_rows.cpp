@@ -22,6 +22,29 @@ RenderedImage blank_image(int width, int height) {
     return image;
 }
 
+void FrameCounters::report(RenderStats* stats, std::chrono::steady_clock::time_point start,
+                           long primary_rays) const {
+    if (stats == nullptr) {
+        return;
+    }
+    stats->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->primary_rays = primary_rays;
+    stats->hits = hits;
+    stats->unknown = unknown;
+    stats->primary_work = primary_work;
+}
+
+void store_pixel(RenderedImage& image, std::size_t p, const Vec3& color, const Vec3& normal,
+                 double depth, double work) {
+    for (int c = 0; c < 3; ++c) {
+        image.color[3 * p + c] = static_cast<float>(color[c]);
+        image.normal[3 * p + c] = static_cast<float>(normal[c]);
+    }
+    image.depth[p] = static_cast<float>(depth);
+    image.work[p] = static_cast<float>(work);
+}
+
 void for_each_row(int height, const ExecutionSettings& execution,
                   const std::function<void(int)>& row) {
     std::atomic<int> rows_done{0};

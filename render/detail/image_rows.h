@@ -2,6 +2,8 @@
 // empty image with its AOVs, and the rows as units of parallel work with progress reports.
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <functional>
 
 #include "render/renderer.h"
@@ -10,6 +12,24 @@ namespace locus::render::detail {
 
 // Black colour, infinite depth, zero normals and work.
 RenderedImage blank_image(int width, int height);
+
+// A frame's counts, added to by rows on any thread, and reported as RenderStats.
+struct FrameCounters {
+    std::atomic<long> hits{0}, unknown{0}, primary_work{0};
+    void add_row(long row_hits, long row_unknown, long row_work) {
+        hits += row_hits;
+        unknown += row_unknown;
+        primary_work += row_work;
+    }
+    // Fills `stats` (when not null) with these counts and the time since `start`.
+    void report(RenderStats* stats, std::chrono::steady_clock::time_point start,
+                long primary_rays) const;
+};
+
+// Writes pixel p: the colour (already averaged over the samples), the normal and depth of the
+// nearest hit, and the work spent.
+void store_pixel(RenderedImage& image, std::size_t p, const Vec3& color, const Vec3& normal,
+                 double depth, double work);
 
 // Calls row(y) for y in [0, height) as oneTBB work on execution.threads threads (0: all),
 // reporting the finished fraction through execution.progress (serialised; a report is skipped

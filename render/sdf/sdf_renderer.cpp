@@ -1,6 +1,5 @@
 #include "render/sdf/sdf_renderer.h"
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -137,7 +136,7 @@ RenderedImage render_sdf_scene(const Scene& scene,
 
     RenderedImage image = detail::blank_image(scene.width, scene.height);
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
-    std::atomic<long> hits{0}, undecided{0}, primary_work{0};
+    detail::FrameCounters frame;
 
     auto render_row = [&](int y) {
         long row_hits = 0, row_work = 0;
@@ -171,28 +170,14 @@ RenderedImage render_sdf_scene(const Scene& scene,
                     pixel_work += counters.evaluations + counters.root_work;
                 }
             }
-            const double weight = 1.0 / (k * k);
-            for (int c = 0; c < 3; ++c) {
-                image.color[3 * p + c] = static_cast<float>(sum[c] * weight);
-                image.normal[3 * p + c] = static_cast<float>(nearest_normal[c]);
-            }
-            image.depth[p] = static_cast<float>(nearest);
-            image.work[p] = static_cast<float>(pixel_work);
+            detail::store_pixel(image, p, sum * (1.0 / (k * k)), nearest_normal, nearest,
+                                pixel_work);
         }
-        hits += row_hits;
-        undecided += row_counters.undecided;
-        primary_work += row_work;
+        frame.add_row(row_hits, row_counters.undecided, row_work);
     };
 
     detail::for_each_row(scene.height, execution, render_row);
-    if (stats != nullptr) {
-        stats->seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats->primary_rays = static_cast<long>(pixels) * k * k;
-        stats->hits = hits;
-        stats->unknown = undecided;
-        stats->primary_work = primary_work;
-    }
+    frame.report(stats, start, static_cast<long>(pixels) * k * k);
     return image;
 }
 

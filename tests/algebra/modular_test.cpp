@@ -18,6 +18,11 @@
 namespace locus::algebra {
 namespace {
 
+// The basis as text, normalized (print.h): equal bases, equal texts.
+std::string normalized(const std::vector<Polynomial>& basis, const PolyRing& ring) {
+    return format_polynomials(basis, ring, OutputFormat::normalized);
+}
+
 std::vector<std::string> known_cases() {
     std::vector<std::string> names;
     std::istringstream in(test::read_text(test::source_dir() + "/tests/data/known/CASES.txt"));
@@ -36,8 +41,7 @@ TEST_P(ModularKnown, EqualsBuchbergerAndIsCertified) {
     const IdealFile ideal = parse_ideal_file(test::read_text(base + ".ideal"));
     ModularStats stats;
     const GroebnerResult r = modular_groebner(ideal.generators, {}, &stats);
-    EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
-              test::read_text(base + ".expected"));
+    EXPECT_EQ(normalized(r.basis, *ideal.ring), test::read_text(base + ".expected"));
     EXPECT_TRUE(stats.certified);
     EXPECT_TRUE(is_reduced(r.basis));
 }
@@ -70,8 +74,7 @@ TEST(Modular, AgreesWithSingularOracleOnRandomIdeals) {
                 state = outside;
                 continue;
             }
-            EXPECT_EQ(format_polynomials(r.basis, *file.ring, OutputFormat::normalized), expected)
-                << ideal;
+            EXPECT_EQ(normalized(r.basis, *file.ring), expected) << ideal;
             ++cases;
             state = outside;
         } else if (state == reading_expected) {
@@ -94,9 +97,8 @@ TEST(Modular, LexGoesThroughFglmExactlyWhenTheIdealIsZeroDimensional) {
         const GroebnerResult r = modular_groebner(ideal.generators, {}, &stats);
         EXPECT_EQ(stats.fglm, zero_dimensional);
         EXPECT_TRUE(stats.certified);
-        EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
-                  format_polynomials(groebner(ideal.generators).basis, *ideal.ring,
-                                     OutputFormat::normalized));
+        EXPECT_EQ(normalized(r.basis, *ideal.ring),
+                  normalized(groebner(ideal.generators).basis, *ideal.ring));
     }
 }
 
@@ -106,10 +108,8 @@ TEST(Modular, AutomaticAgreesWithBuchbergerOnTheBenchSuite) {
                                    "tangent_surface_elim", "enneper_elim"}) {
         SCOPED_TRACE(name);
         const IdealFile ideal = parse_ideal_file(test::read_text(dir + name + ".ideal"));
-        EXPECT_EQ(format_polynomials(groebner_automatic(ideal.generators).basis, *ideal.ring,
-                                     OutputFormat::normalized),
-                  format_polynomials(groebner(ideal.generators).basis, *ideal.ring,
-                                     OutputFormat::normalized));
+        EXPECT_EQ(normalized(groebner_automatic(ideal.generators).basis, *ideal.ring),
+                  normalized(groebner(ideal.generators).basis, *ideal.ring));
     }
 }
 
@@ -119,17 +119,14 @@ TEST(Modular, ReviewRegressions) {
     // prime sequence both primes gave the unit ideal, agreed, and "1" passed certification.
     const IdealFile product =
         parse_ideal_file("vars: x,y\norder: grevlex\nx^2+4611685975477714963*y\nx*y-1\n");
-    EXPECT_EQ(format_polynomials(modular_groebner(product.generators).basis, *product.ring,
-                                 OutputFormat::normalized),
-              format_polynomials(groebner(product.generators).basis, *product.ring,
-                                 OutputFormat::normalized));
+    EXPECT_EQ(normalized(modular_groebner(product.generators).basis, *product.ring),
+              normalized(groebner(product.generators).basis, *product.ring));
     // The same primes forced: the leading coefficient they divide sets them aside.
     const IdealFile lead = parse_ideal_file("vars: x\norder: grevlex\n4611685975477714963*x-1\n");
     ModularOptions forced;
     forced.primes = {2147483647u, 2147483629u};
     ModularStats stats;
-    EXPECT_EQ(format_polynomials(modular_groebner(lead.generators, forced, &stats).basis,
-                                 *lead.ring, OutputFormat::normalized),
+    EXPECT_EQ(normalized(modular_groebner(lead.generators, forced, &stats).basis, *lead.ring),
               "x-1/4611685975477714963\n");
     EXPECT_GE(stats.unlucky_primes, 2u);
     // Under an elimination order, F4 one pair at a time by least lcm did not finish; by least
@@ -138,10 +135,8 @@ TEST(Modular, ReviewRegressions) {
         "vars: x,y,z,w\norder: elim(x,y)\n2*w^3+x^2*z^3\n"
         "-15*x^2*z^3*w^3+57*x^2*z^2*w^3+x*y^3*z-y*z^3\n1/7*x^2*y^2*w\n"
         "y^3*z*w+2*x*y^3*z^3*w+61*z+7*w^3\n");
-    EXPECT_EQ(
-        format_polynomials(modular_groebner(elim.generators).basis, *elim.ring,
-                           OutputFormat::normalized),
-        format_polynomials(groebner(elim.generators).basis, *elim.ring, OutputFormat::normalized));
+    EXPECT_EQ(normalized(modular_groebner(elim.generators).basis, *elim.ring),
+              normalized(groebner(elim.generators).basis, *elim.ring));
     // Certification and FGLM honour the deadline.
     const IdealFile katsura =
         parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura5.ideal"));
@@ -167,8 +162,7 @@ TEST(Modular, UnluckyPrimeIsDetectedAndSetAside) {
     ModularStats stats;
     const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
     const GroebnerResult reference = groebner(ideal.generators);
-    EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
-              format_polynomials(reference.basis, *ideal.ring, OutputFormat::normalized));
+    EXPECT_EQ(normalized(r.basis, *ideal.ring), normalized(reference.basis, *ideal.ring));
     EXPECT_EQ(stats.primes_used.front(), p);
     EXPECT_GE(stats.unlucky_primes, 1u);
     // A prime dividing a denominator is set aside too.
@@ -176,9 +170,8 @@ TEST(Modular, UnluckyPrimeIsDetectedAndSetAside) {
         parse_ideal_file("vars: x,y\norder: grevlex\nx^2-y/" + std::to_string(p) + "\nx*y-1\n");
     ModularStats fraction_stats;
     const GroebnerResult r2 = modular_groebner(fractions.generators, options, &fraction_stats);
-    EXPECT_EQ(format_polynomials(r2.basis, *fractions.ring, OutputFormat::normalized),
-              format_polynomials(groebner(fractions.generators).basis, *fractions.ring,
-                                 OutputFormat::normalized));
+    EXPECT_EQ(normalized(r2.basis, *fractions.ring),
+              normalized(groebner(fractions.generators).basis, *fractions.ring));
     EXPECT_GE(fraction_stats.unlucky_primes, 1u);
 }
 
@@ -307,17 +300,15 @@ TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
     options.primes = {other, p};
     ModularStats stats;
     const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
-    EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
-              format_polynomials(groebner(ideal.generators).basis, *ideal.ring,
-                                 OutputFormat::normalized));
+    EXPECT_EQ(normalized(r.basis, *ideal.ring),
+              normalized(groebner(ideal.generators).basis, *ideal.ring));
     EXPECT_GE(stats.replays_refused, 1u);
     EXPECT_TRUE(stats.certified);
     // Without tracing, the same basis.
     options.trace = false;
     ModularStats untraced;
     const GroebnerResult r2 = modular_groebner(ideal.generators, options, &untraced);
-    EXPECT_EQ(format_polynomials(r2.basis, *ideal.ring, OutputFormat::normalized),
-              format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized));
+    EXPECT_EQ(normalized(r2.basis, *ideal.ring), normalized(r.basis, *ideal.ring));
     EXPECT_EQ(untraced.replayed, 0u);
 }
 
