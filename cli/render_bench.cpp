@@ -43,6 +43,14 @@ std::vector<SuiteSurface> read_suite(const std::string& path) {
     }
 }
 
+// The median and the fastest of repeated runs. The median shrugs off runs slowed several-fold
+// by other work on a shared machine; the fastest is the run least disturbed (noise only ever
+// adds time), and moves less from one benchmark run to the next.
+struct RunTimes {
+    double median = -1.0;
+    double best = -1.0;
+};
+
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t middle = values.size() / 2;
@@ -50,8 +58,8 @@ double median(std::vector<double> values) {
 }
 
 // Seconds surf takes to draw the surface at size×size (start-up measured with an empty script
-// and subtracted), or a negative value when surf is missing or fails.
-double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
+// and subtracted), or negative values when surf is missing or fails.
+RunTimes time_surf(const std::string& surf, const SuiteSurface& s, int size) {
     const auto dir = std::filesystem::temp_directory_path();
     const std::string stem = "locus-surf-" + std::to_string(::getpid());
     const auto image = dir / (stem + ".ppm");
@@ -84,27 +92,28 @@ double time_surf(const std::string& surf, const SuiteSurface& s, int size) {
     // Median of repeated runs (at least 5, at least 0.2 s), as for locus' own figures: a single
     // surf run at 256² takes a few milliseconds, below the noise of one process start, and on a
     // shared machine single runs are sometimes slowed several-fold; the median ignores those.
-    auto median_of = [&](bool draw) {
+    auto repeat = [&](bool draw) {
         std::vector<double> times;
         double sum = 0.0;
         do {
             const double seconds = run(draw);
             if (seconds < 0) {
-                return -1.0;
+                return RunTimes{};
             }
             times.push_back(seconds);
             sum += seconds;
         } while (times.size() < 5 || (sum < 0.2 && times.size() < 50));
-        return median(times);
+        return RunTimes{median(times), *std::min_element(times.begin(), times.end())};
     };
-    const double startup = median_of(false);
-    const double total = median_of(true);
+    const RunTimes startup = repeat(false);
+    const RunTimes total = repeat(true);
     const bool drew = std::filesystem::exists(image);
     std::filesystem::remove(image);
-    if (startup < 0 || total < 0 || !drew) {
-        return -1.0;
+    if (startup.median < 0 || total.median < 0 || !drew) {
+        return RunTimes{};
     }
-    return std::max(total - startup, 1e-6);
+    return RunTimes{std::max(total.median - startup.median, 1e-6),
+                    std::max(total.best - startup.best, 1e-6)};
 }
 
 // A method with one of its settings: the sphere-tracing methods are also run with their
@@ -191,11 +200,12 @@ int run_render_bench(const RenderBenchArgs& args) {
     if (args.csv) {
         std::cout << "case,degree,method,setting,tolerance,rays,seconds,rays_per_second,"
                      "work_per_ray,wrong_rays,wrong_share,unknown_rays,max_depth_error,"
-                     "mean_depth_error,image_rms,render_seconds,surf_seconds\n";
+                     "mean_depth_error,image_rms,render_seconds,surf_seconds,"
+                     "render_best_seconds,surf_best_seconds\n";
     } else {
-        std::printf("%-18s %3s %-25s %10s %9s %8s %8s %11s %11s %7s %9s %9s\n", "case", "deg",
-                    "method", "rays/s", "work/ray", "wrong", "wrong %", "max err", "mean err",
-                    "img rms", "render s", "surf s");
+        std::printf("%-18s %3s %-25s %10s %9s %8s %8s %11s %11s %7s %9s %9s %6s %6s\n", "case",
+                    "deg", "method", "rays/s", "work/ray", "wrong", "wrong %", "max err",
+                    "mean err", "img rms", "render s", "surf s", "ratio", "best");
     }
     for (const SuiteSurface& s : suite) {
         const algebra::CompiledPolynomial f = algebra::compile_surface(s.equation);
@@ -207,7 +217,8 @@ int run_render_bench(const RenderBenchArgs& args) {
         const render::ClipRegion region = scene.surfaces[0].clip;
         const render::PrimaryRays reference = render::trace_primary_rays(
             f, region, camera, args.size, args.size, render::TraceMethod::exact, 0);
-        const double surf_seconds = with_surf ? time_surf(args.surf, s, args.size) : -1.0;
+        const RunTimes surf_times = with_surf ? time_surf(args.surf, s, args.size) : RunTimes{};
+        const double surf_seconds = surf_times.median;
         // The whole picture as `locus render` makes it (default method, Blinn–Phong, no
         // shadows, one sample, all cores): the figure to set beside surf's.
         scene.options.shadows = false;
@@ -221,6 +232,7 @@ int run_render_bench(const RenderBenchArgs& args) {
             render_total += stats.seconds;
         } while (frames.size() < 5 || (render_total < args.min_seconds && frames.size() < 50));
         const double render_seconds = median(frames);
+        const double render_best = *std::min_element(frames.begin(), frames.end());
         const double tolerance = 1e-6 * s.clip_radius;
         const std::vector<double> reference_shade = shade_image(f, camera, reference, args.size);
         for (const Setting& setting : settings_of(methods)) {
@@ -275,18 +287,29 @@ int run_render_bench(const RenderBenchArgs& args) {
                           << "," << seconds << "," << rays / seconds << "," << work / rays << ","
                           << wrong << "," << wrong / rays << "," << unknown << "," << max_error
                           << "," << mean_error << "," << image_rms << "," << render_seconds << ","
-                          << surf_seconds << "\n";
+                          << surf_seconds << "," << render_best << "," << surf_times.best << "\n";
             } else {
                 std::string label(render::to_string(method));
                 if (setting.name != "default") {
                     label += " ";
                     label += setting.name;
                 }
+                // ratio: locus / surf by medians; best: by the fastest runs.
+                auto ratio_text = [](double locus, double surf) {
+                    char text[16] = "-";
+                    if (surf > 0) {
+                        std::snprintf(text, sizeof text, "%.2f", locus / surf);
+                    }
+                    return std::string(text);
+                };
                 std::printf(
-                    "%-18s %3d %-25s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %7.2f %9.4f %9s\n",
+                    "%-18s %3d %-25s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %7.2f %9.4f %9s %6s "
+                    "%6s\n",
                     s.name.c_str(), f.degree(), label.c_str(), rays / seconds, work / rays, wrong,
                     100.0 * wrong / rays, max_error, mean_error, image_rms, render_seconds,
-                    surf_seconds > 0 ? std::to_string(surf_seconds).substr(0, 6).c_str() : "-");
+                    surf_seconds > 0 ? std::to_string(surf_seconds).substr(0, 6).c_str() : "-",
+                    ratio_text(render_seconds, surf_seconds).c_str(),
+                    ratio_text(render_best, surf_times.best).c_str());
             }
             std::cout.flush();
         }

@@ -124,6 +124,10 @@ expect "render: unknown node type names the node" 2 "badtree.toml: line 4, colum
     "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
 expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
     "$locus" bench sdf --size 16 --min-seconds 0 --csv
+expect "bench render compares sturm with exact, ray by ray" 0 "sphere,2,sturm,default,0,64," -- \
+    "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
+expect "bench render reports the fastest runs too" 0 "render_best_seconds,surf_best_seconds" -- \
+    "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
 expect "resultant honours --timeout" 3 "timeout: the resultant route stopped after 1 s" -- \
     "$locus" implicitize bench/data/implicit/bezier_triangle3.param --method resultant --timeout 1
 expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z" -- \
