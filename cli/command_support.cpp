@@ -61,6 +61,12 @@ algebra::IdealFile read_ideal(const std::string& path,
     return file;
 }
 
+std::string seconds_text(double seconds) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g s", seconds);
+    return buffer;
+}
+
 std::optional<std::chrono::steady_clock::time_point> deadline_after(double seconds) {
     if (seconds <= 0) {
         return std::nullopt;

@@ -31,6 +31,9 @@ std::string read_input(const std::string& path);
 algebra::IdealFile read_ideal(const std::string& path,
                               const std::optional<std::string>& order_override = std::nullopt);
 
+// "0.5 s": a --timeout value as messages quote it.
+std::string seconds_text(double seconds);
+
 // A deadline `seconds` from now, or none for seconds <= 0.
 std::optional<std::chrono::steady_clock::time_point> deadline_after(double seconds);
 

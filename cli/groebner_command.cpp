@@ -61,12 +61,6 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
                  s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
 }
 
-std::string seconds_text(double seconds) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g s", seconds);
-    return buffer;
-}
-
 int run_groebner(const GroebnerArgs& args) {
     const algebra::OutputFormat format = [&] {
         try {

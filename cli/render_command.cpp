@@ -29,6 +29,7 @@ struct RenderArgs {
     std::string method;
     int samples = 0;
     int threads = -1;
+    double timeout_seconds = 0;
     std::vector<std::string> aovs;
 };
 
@@ -176,13 +177,25 @@ int run_render(const RenderArgs& args) {
     render::ExecutionSettings execution;
     execution.threads = scene.options.threads;
     execution.progress = terminal_fraction_progress();
+    execution.deadline = deadline_after(args.timeout_seconds);
+    auto clear_progress = [&] {
+        if (execution.progress) {
+            std::fprintf(stderr, "\r\033[K");
+        }
+    };
     render::RenderStats stats;
-    const render::RenderedImage image =
-        scene.objects.empty() ? render::render(scene, compiled, execution, &stats)
-                              : render::render_sdf_scene(scene, compiled, execution, &stats);
-    if (execution.progress) {
-        std::fprintf(stderr, "\r\033[K");
+    render::RenderedImage image;
+    try {
+        image = scene.objects.empty()
+                    ? render::render(scene, compiled, execution, &stats)
+                    : render::render_sdf_scene(scene, compiled, execution, &stats);
+    } catch (const Timeout& e) {
+        clear_progress();
+        throw CommandFailure(exit_timeout, std::string(e.what()) + " after " +
+                                               seconds_text(args.timeout_seconds) +
+                                               "; no image written");
     }
+    clear_progress();
     const std::vector<std::string> written = render::write_image(image, args.output, aovs);
     std::fprintf(stderr,
                  "rendered %dx%d, %d×%d samples, method %s: %.3f s, %.2f M primary rays/s, "
@@ -226,6 +239,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--ao", args->ao, "ambient occlusion: on | off (default)");
     cmd->add_option("--background", args->background, "background colour R,G,B (linear, 0..1)");
     cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
+    cmd->add_option("--timeout", args->timeout_seconds,
+                    "give up after SECONDS, writing no image (exit code 3)");
     cmd->add_option("--aov", args->aovs, "also write depth | normal | work as <stem>.<aov>.exr")
         ->delimiter(',');
     cmd->callback([args, &exit_code] { exit_code = run_render(*args); });

@@ -4,7 +4,9 @@
 // row, then each pixel costs a small polynomial evaluation plus its root finding.
 #pragma once
 
+#include <chrono>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -35,10 +37,13 @@ struct ExecutionSettings {
     int threads = 0;  // 0: all hardware threads
     // Called with the finished fraction, from whichever thread finished a row (serialised).
     std::function<void(double)> progress;
+    // Rows not started by then are skipped and the render throws locus::Timeout: a picture
+    // with missing rows is not a result (`locus render --timeout`).
+    std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 // Precondition: one compiled polynomial per scene surface, in order. Throws InputError for a
-// degenerate camera.
+// degenerate camera, Timeout when execution.deadline passes.
 RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolynomial> surfaces,
                      const ExecutionSettings& execution, RenderStats* stats = nullptr);
 

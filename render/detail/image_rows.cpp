@@ -3,10 +3,13 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include "algebra/error.h"
 
 namespace locus::render::detail {
 
@@ -48,25 +51,35 @@ void store_pixel(RenderedImage& image, std::size_t p, const Vec3& color, const V
 void for_each_row(int height, const ExecutionSettings& execution,
                   const std::function<void(int)>& row) {
     std::atomic<int> rows_done{0};
+    std::atomic<bool> expired{false};
     std::mutex progress_mutex;
     const int threads =
         execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
     tbb::task_arena arena(threads);
     arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, height, 1),
-                          [&](const tbb::blocked_range<int>& range) {
-                              for (int y = range.begin(); y < range.end(); ++y) {
-                                  row(y);
-                                  const int done = ++rows_done;
-                                  if (execution.progress) {
-                                      std::unique_lock lock(progress_mutex, std::try_to_lock);
-                                      if (lock.owns_lock()) {
-                                          execution.progress(static_cast<double>(done) / height);
-                                      }
-                                  }
-                              }
-                          });
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, height, 1), [&](const tbb::blocked_range<int>& range) {
+                for (int y = range.begin(); y < range.end(); ++y) {
+                    if (expired || (execution.deadline &&
+                                    std::chrono::steady_clock::now() >= *execution.deadline)) {
+                        expired = true;
+                        return;
+                    }
+                    row(y);
+                    const int done = ++rows_done;
+                    if (execution.progress) {
+                        std::unique_lock lock(progress_mutex, std::try_to_lock);
+                        if (lock.owns_lock()) {
+                            execution.progress(static_cast<double>(done) / height);
+                        }
+                    }
+                }
+            });
     });
+    if (expired) {
+        throw Timeout("rendering stopped with " + std::to_string(rows_done.load()) + " of " +
+                      std::to_string(height) + " rows done");
+    }
 }
 
 }  // namespace locus::render::detail

@@ -33,7 +33,8 @@ void store_pixel(RenderedImage& image, std::size_t p, const Vec3& color, const V
 
 // Calls row(y) for y in [0, height) as oneTBB work on execution.threads threads (0: all),
 // reporting the finished fraction through execution.progress (serialised; a report is skipped
-// while another is being made).
+// while another is being made). Once execution.deadline has passed no further row starts, and
+// the call throws locus::Timeout saying how many rows were done.
 void for_each_row(int height, const ExecutionSettings& execution,
                   const std::function<void(int)>& row);
 

@@ -124,6 +124,12 @@ expect "render: unknown node type names the node" 2 "badtree.toml: line 4, colum
     "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
 expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
     "$locus" bench sdf --size 16 --min-seconds 0 --csv
+expect "render timeout exits 3 and writes nothing" 3 "no image written" -- \
+    "$locus" render "x^2+y^2+z^2-1" --method exact --size 400x400 --samples 3 --timeout 0.05 \
+    -o "$tmp/timeout.png"
+if [[ -e "$tmp/timeout.png" ]]; then
+    echo "FAIL render timeout wrote an image"; failures=$((failures + 1))
+fi
 expect "bench render compares sturm with exact, ray by ray" 0 "sphere,2,sturm,default,0,64," -- \
     "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
 expect "bench render reports the fastest runs too" 0 "render_best_seconds,surf_best_seconds" -- \

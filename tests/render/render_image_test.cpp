@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
+
+#include "algebra/error.h"
 
 namespace locus::render {
 namespace {
@@ -77,6 +80,21 @@ TEST(Render, NoPixelIsNanAtSingularPoints) {
             ASSERT_TRUE(std::isfinite(c)) << equation;
         }
     }
+}
+
+TEST(Render, DeadlineStopsTheFrameWithATimeout) {
+    const Scene scene = sphere_scene(TraceMethod::sturm);
+    const std::vector<algebra::CompiledPolynomial> surfaces = {
+        algebra::compile_surface("x^2+y^2+z^2-1")};
+    ExecutionSettings execution;
+    execution.threads = 2;
+    execution.deadline = std::chrono::steady_clock::now();  // already passed
+    EXPECT_THROW(render(scene, surfaces, execution), Timeout);
+    // A deadline far ahead changes nothing.
+    execution.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+    const RenderedImage image = render(scene, surfaces, execution);
+    const RenderedImage reference = render(scene, surfaces, {});
+    EXPECT_EQ(image.color, reference.color);
 }
 
 }  // namespace
