@@ -20,8 +20,19 @@ const RingPtr& ring_of(Generators g, const char* what) {
     return g[0].ring();
 }
 
-std::vector<Polynomial> basis_of(Generators g) {
-    GroebnerResult r = groebner(g);
+// Throws Timeout unless the run completed: every operation here needs the whole basis.
+void require_complete(const GroebnerResult& r) {
+    if (r.outcome == GroebnerOutcome::stopped_timeout) {
+        throw Timeout("a Gröbner basis was not complete at the deadline");
+    }
+    if (r.outcome != GroebnerOutcome::complete) {
+        throw Timeout("a Gröbner basis outgrew the size limit");
+    }
+}
+
+std::vector<Polynomial> basis_of(Generators g, const GroebnerOptions& options) {
+    GroebnerResult r = groebner(g, options);
+    require_complete(r);
     return std::move(r.basis);
 }
 
@@ -49,8 +60,10 @@ std::vector<Polynomial> drop_last_variable(Generators polys, const RingPtr& smal
 }
 
 // Generators (in `big`, under elim(last)) → reduced basis of the elimination ideal in `small`.
-std::vector<Polynomial> eliminate_last(std::vector<Polynomial> gens, const RingPtr& small) {
-    GroebnerResult r = groebner(gens);
+std::vector<Polynomial> eliminate_last(std::vector<Polynomial> gens, const RingPtr& small,
+                                       const GroebnerOptions& options) {
+    GroebnerResult r = groebner(gens, options);
+    require_complete(r);
     const std::size_t last = small->num_vars();
     std::vector<Polynomial> kept;
     for (auto& g : r.basis) {
@@ -62,7 +75,7 @@ std::vector<Polynomial> eliminate_last(std::vector<Polynomial> gens, const RingP
     if (back.empty()) {
         return back;
     }
-    return basis_of(back);
+    return basis_of(back, options);
 }
 
 // Buchberger over Q that remembers, for every basis element, its cofactors with respect to the
@@ -90,7 +103,8 @@ TrackedElement reduce_tracked(TrackedElement p, const std::vector<TrackedElement
     return p;
 }
 
-std::vector<TrackedElement> tracked_groebner(Generators generators) {
+std::vector<TrackedElement> tracked_groebner(Generators generators,
+                                             const GroebnerOptions& options) {
     const RingPtr& ring = generators[0].ring();
     const std::size_t m = generators.size();
     std::vector<TrackedElement> basis;
@@ -111,6 +125,9 @@ std::vector<TrackedElement> tracked_groebner(Generators generators) {
     const MonomialLayout& layout = ring->layout();
     std::vector<std::uint64_t> lcm(layout.words()), mi(layout.words()), mj(layout.words());
     while (!pairs.empty()) {
+        if (options.deadline && std::chrono::steady_clock::now() >= *options.deadline) {
+            throw Timeout("the membership certificate was not complete at the deadline");
+        }
         const auto [i, j] = pairs.back();
         pairs.pop_back();
         const Polynomial& f = basis[i].poly;
@@ -154,15 +171,16 @@ RingPtr ring_with_extra_variable(const RingPtr& ring, const std::string& base) {
     return PolyRing::make(std::move(names), MonomialOrder::elimination(n, {n - 1}));
 }
 
-MembershipCertificate ideal_membership(const Polynomial& f, Generators generators) {
+MembershipCertificate ideal_membership(const Polynomial& f, Generators generators,
+                                       const GroebnerOptions& options) {
     ring_of(generators, "membership");
     require_same_ring(generators[0], f);
     MembershipCertificate cert{false, {}, Polynomial(f.ring())};
-    cert.remainder = normal_form(f, basis_of(generators));
+    cert.remainder = normal_form(f, basis_of(generators, options));
     if (!cert.remainder.is_zero()) {
         return cert;
     }
-    const std::vector<TrackedElement> tracked = tracked_groebner(generators);
+    const std::vector<TrackedElement> tracked = tracked_groebner(generators, options);
     TrackedElement t{f, std::vector<Polynomial>(generators.size(), Polynomial(f.ring()))};
     t = reduce_tracked(std::move(t), tracked);
     // reduce_tracked computed f − Σ cofactors·gens = remainder = 0, with cofactors negated.
@@ -191,9 +209,7 @@ std::vector<Polynomial> eliminate(Generators generators, std::span<const std::si
         moved.push_back(g.in_ring(elim_ring));
     }
     GroebnerResult r = groebner(moved, options);
-    if (r.outcome != GroebnerOutcome::complete) {
-        throw Timeout("elimination stopped before its Gröbner basis was complete");
-    }
+    require_complete(r);
     std::vector<Polynomial> kept;
     for (const auto& g : r.basis) {
         if (std::none_of(variables.begin(), variables.end(),
@@ -201,17 +217,17 @@ std::vector<Polynomial> eliminate(Generators generators, std::span<const std::si
             kept.push_back(g.in_ring(ring));
         }
     }
-    return kept.empty() ? kept : basis_of(kept);
+    return kept.empty() ? kept : basis_of(kept, options);
 }
 
-std::vector<Polynomial> ideal_sum(Generators i, Generators j) {
+std::vector<Polynomial> ideal_sum(Generators i, Generators j, const GroebnerOptions& options) {
     std::vector<Polynomial> all(i.begin(), i.end());
     all.insert(all.end(), j.begin(), j.end());
     ring_of(all, "sum");
-    return basis_of(all);
+    return basis_of(all, options);
 }
 
-std::vector<Polynomial> ideal_product(Generators i, Generators j) {
+std::vector<Polynomial> ideal_product(Generators i, Generators j, const GroebnerOptions& options) {
     ring_of(i, "product");
     ring_of(j, "product");
     std::vector<Polynomial> all;
@@ -220,10 +236,11 @@ std::vector<Polynomial> ideal_product(Generators i, Generators j) {
             all.push_back(f * g);
         }
     }
-    return basis_of(all);
+    return basis_of(all, options);
 }
 
-std::vector<Polynomial> ideal_intersection(Generators i, Generators j) {
+std::vector<Polynomial> ideal_intersection(Generators i, Generators j,
+                                           const GroebnerOptions& options) {
     const RingPtr& ring = ring_of(i, "intersection");
     ring_of(j, "intersection");
     const RingPtr big = ring_with_extra_variable(ring, "t");
@@ -236,10 +253,10 @@ std::vector<Polynomial> ideal_intersection(Generators i, Generators j) {
     for (const auto& g : lift_into(j, big)) {
         gens.push_back(one_minus_t * g);
     }
-    return eliminate_last(std::move(gens), ring);
+    return eliminate_last(std::move(gens), ring, options);
 }
 
-std::vector<Polynomial> ideal_quotient(Generators i, Generators j) {
+std::vector<Polynomial> ideal_quotient(Generators i, Generators j, const GroebnerOptions& options) {
     const RingPtr& ring = ring_of(i, "quotient");
     ring_of(j, "quotient");
     std::vector<Polynomial> result;
@@ -250,11 +267,11 @@ std::vector<Polynomial> ideal_quotient(Generators i, Generators j) {
         }
         const Polynomial single[] = {g};
         std::vector<Polynomial> part;
-        for (const auto& h : ideal_intersection(i, single)) {
+        for (const auto& h : ideal_intersection(i, single, options)) {
             part.push_back(exact_quotient(h, g));
         }
-        part = basis_of(part);
-        result = first ? part : ideal_intersection(result, part);
+        part = basis_of(part, options);
+        result = first ? part : ideal_intersection(result, part, options);
         first = false;
     }
     if (first) {
@@ -263,7 +280,7 @@ std::vector<Polynomial> ideal_quotient(Generators i, Generators j) {
     return result;
 }
 
-std::vector<Polynomial> saturation(Generators i, Generators j) {
+std::vector<Polynomial> saturation(Generators i, Generators j, const GroebnerOptions& options) {
     const RingPtr& ring = ring_of(i, "saturation");
     ring_of(j, "saturation");
     std::vector<Polynomial> result;
@@ -277,8 +294,8 @@ std::vector<Polynomial> saturation(Generators i, Generators j) {
         std::vector<Polynomial> gens = lift_into(i, big);
         const Polynomial g_big[] = {g};
         gens.push_back(Polynomial::constant(big, Rational(1)) - t * lift_into(g_big, big)[0]);
-        std::vector<Polynomial> part = eliminate_last(std::move(gens), ring);
-        result = first ? part : ideal_intersection(result, part);
+        std::vector<Polynomial> part = eliminate_last(std::move(gens), ring, options);
+        result = first ? part : ideal_intersection(result, part, options);
         first = false;
     }
     if (first) {
@@ -287,7 +304,8 @@ std::vector<Polynomial> saturation(Generators i, Generators j) {
     return result;
 }
 
-bool radical_membership(const Polynomial& f, Generators generators) {
+bool radical_membership(const Polynomial& f, Generators generators,
+                        const GroebnerOptions& options) {
     const RingPtr& ring = ring_of(generators, "radical membership");
     require_same_ring(generators[0], f);
     const RingPtr big = ring_with_extra_variable(ring, "y");
@@ -295,24 +313,24 @@ bool radical_membership(const Polynomial& f, Generators generators) {
     const Polynomial f_big[] = {f};
     const Polynomial y = Polynomial::variable(big, ring->num_vars());
     gens.push_back(Polynomial::constant(big, Rational(1)) - y * lift_into(f_big, big)[0]);
-    const auto basis = basis_of(gens);
+    const auto basis = basis_of(gens, options);
     return basis.size() == 1 && basis[0].is_constant();
 }
 
-bool ideal_contains(Generators i, Generators j) {
+bool ideal_contains(Generators i, Generators j, const GroebnerOptions& options) {
     ring_of(i, "containment");
-    const std::vector<Polynomial> basis = basis_of(i);
+    const std::vector<Polynomial> basis = basis_of(i, options);
     return std::all_of(j.begin(), j.end(),
                        [&](const Polynomial& g) { return normal_form(g, basis).is_zero(); });
 }
 
-bool ideal_equal(Generators i, Generators j) {
-    return ideal_contains(i, j) && ideal_contains(j, i);
+bool ideal_equal(Generators i, Generators j, const GroebnerOptions& options) {
+    return ideal_contains(i, j, options) && ideal_contains(j, i, options);
 }
 
-DimensionReport zero_dimension_test(Generators generators) {
+DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions& options) {
     const RingPtr& ring = ring_of(generators, "dimension");
-    const std::vector<Polynomial> basis = basis_of(generators);
+    const std::vector<Polynomial> basis = basis_of(generators, options);
     DimensionReport report;
     if (basis.size() == 1 && basis[0].is_constant()) {
         report.kind = Dimension::unit_ideal;

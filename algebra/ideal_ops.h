@@ -1,6 +1,8 @@
 // Ideal operations over Q built on Gröbner bases (Cox–Little–O'Shea, IVA ch. 3–4; Becker–
 // Weispfenning ch. 6). An ideal is given by generators in one ring; results are reduced Gröbner
 // bases under that ring's order (normalized as in print.h), so they can be compared directly.
+// `options` reach every Gröbner basis an operation computes; when one stops early (its
+// deadline or size limit) the operation throws Timeout, as none can use a partial basis.
 //
 // Auxiliary variables (intersection, saturation, radical membership) are added in a larger ring
 // with a fresh name and eliminated; they never appear in a result.
@@ -27,26 +29,31 @@ struct MembershipCertificate {
 
 // Is f in ⟨generators⟩? The certificate comes from a Buchberger run that tracks how each basis
 // element is made from the generators (Singular's `lift`).
-MembershipCertificate ideal_membership(const Polynomial& f, Generators generators);
+MembershipCertificate ideal_membership(const Polynomial& f, Generators generators,
+                                       const GroebnerOptions& options = {});
 
 // I ∩ Q[remaining variables]: the reduced basis (under the ring's order) of the elements
 // free of `variables` in a basis for the elimination order elim(variables) (CLO ch. 3 §1).
 std::vector<Polynomial> eliminate(Generators generators, std::span<const std::size_t> variables,
                                   const GroebnerOptions& options = {});
 
-std::vector<Polynomial> ideal_sum(Generators i, Generators j);
-std::vector<Polynomial> ideal_product(Generators i, Generators j);
+std::vector<Polynomial> ideal_sum(Generators i, Generators j, const GroebnerOptions& options = {});
+std::vector<Polynomial> ideal_product(Generators i, Generators j,
+                                      const GroebnerOptions& options = {});
 // I ∩ J = (t·I + (1−t)·J) ∩ Q[x] (CLO ch. 4 §3, Theorem 11).
-std::vector<Polynomial> ideal_intersection(Generators i, Generators j);
+std::vector<Polynomial> ideal_intersection(Generators i, Generators j,
+                                           const GroebnerOptions& options = {});
 // I : J = ∩ₖ (I : gₖ), with I : g = (1/g)·(I ∩ ⟨g⟩) (CLO ch. 4 §4, Theorem 11).
-std::vector<Polynomial> ideal_quotient(Generators i, Generators j);
+std::vector<Polynomial> ideal_quotient(Generators i, Generators j,
+                                       const GroebnerOptions& options = {});
 // I : J^∞ = ∩ₖ (I + ⟨1 − t·gₖ⟩) ∩ Q[x] (CLO ch. 4 §4, Theorem 14).
-std::vector<Polynomial> saturation(Generators i, Generators j);
+std::vector<Polynomial> saturation(Generators i, Generators j, const GroebnerOptions& options = {});
 // f ∈ √I iff 1 ∈ I + ⟨1 − y·f⟩ (CLO ch. 4 §2, Proposition 8).
-bool radical_membership(const Polynomial& f, Generators generators);
+bool radical_membership(const Polynomial& f, Generators generators,
+                        const GroebnerOptions& options = {});
 // J ⊆ I: every generator of J reduces to zero by a Gröbner basis of I.
-bool ideal_contains(Generators i, Generators j);
-bool ideal_equal(Generators i, Generators j);
+bool ideal_contains(Generators i, Generators j, const GroebnerOptions& options = {});
+bool ideal_equal(Generators i, Generators j, const GroebnerOptions& options = {});
 
 enum class Dimension { unit_ideal, zero_dimensional, positive };
 struct DimensionReport {
@@ -56,7 +63,7 @@ struct DimensionReport {
 };
 // Finite-solution test: I is zero-dimensional iff for every variable some leading monomial of
 // its Gröbner basis is a pure power of it (CLO ch. 5 §3, Theorem 6).
-DimensionReport zero_dimension_test(Generators generators);
+DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions& options = {});
 
 // The ring of `ring` with one more variable appended, named `base` or base + digits so that it
 // is fresh, under elim(new variable). Used by the operations above; public for tests.

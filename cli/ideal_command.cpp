@@ -20,6 +20,7 @@ struct IdealArgs {
     std::string second;  // a second ideal file, a polynomial, or a variable list
     std::optional<std::string> order;
     std::string format = "normalized";
+    double timeout_seconds = 0;
 };
 
 // The generators of `path`, moved into `ring` (same variable names, any declared order).
@@ -55,7 +56,7 @@ int answer(bool yes) {
     return yes ? exit_ok : exit_no;
 }
 
-int run_ideal(const IdealArgs& args) {
+int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options) {
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
     const algebra::IdealFile ideal = read_ideal(args.first, args.order);
     const algebra::RingPtr& ring = ideal.ring;
@@ -73,7 +74,8 @@ int run_ideal(const IdealArgs& args) {
         throw CommandFailure(exit_input, "ideal " + op + ": missing second argument");
     }
     if (op == "member") {
-        const auto cert = algebra::ideal_membership(polynomial_argument(args.second, ring), gens);
+        const auto cert =
+            algebra::ideal_membership(polynomial_argument(args.second, ring), gens, options);
         if (!cert.is_member) {
             std::cout << "no\nremainder: " << algebra::to_string(cert.remainder) << "\n";
             return exit_no;
@@ -86,7 +88,8 @@ int run_ideal(const IdealArgs& args) {
         return exit_ok;
     }
     if (op == "radical-member") {
-        return answer(algebra::radical_membership(polynomial_argument(args.second, ring), gens));
+        return answer(
+            algebra::radical_membership(polynomial_argument(args.second, ring), gens, options));
     }
     if (op == "eliminate") {
         std::vector<std::size_t> vars;
@@ -97,10 +100,10 @@ int run_ideal(const IdealArgs& args) {
             }
             vars.push_back(*v);
         }
-        return print_basis(algebra::eliminate(gens, vars));
+        return print_basis(algebra::eliminate(gens, vars, options));
     }
     if (op == "dimension") {
-        const auto report = algebra::zero_dimension_test(gens);
+        const auto report = algebra::zero_dimension_test(gens, options);
         switch (report.kind) {
         case algebra::Dimension::unit_ideal:
             std::cout << "unit ideal (no solutions)\n";
@@ -117,27 +120,38 @@ int run_ideal(const IdealArgs& args) {
     }
     const auto second = generators_in(args.second, ring);
     if (op == "sum") {
-        return print_basis(algebra::ideal_sum(gens, second));
+        return print_basis(algebra::ideal_sum(gens, second, options));
     }
     if (op == "product") {
-        return print_basis(algebra::ideal_product(gens, second));
+        return print_basis(algebra::ideal_product(gens, second, options));
     }
     if (op == "intersect") {
-        return print_basis(algebra::ideal_intersection(gens, second));
+        return print_basis(algebra::ideal_intersection(gens, second, options));
     }
     if (op == "quotient") {
-        return print_basis(algebra::ideal_quotient(gens, second));
+        return print_basis(algebra::ideal_quotient(gens, second, options));
     }
     if (op == "saturate") {
-        return print_basis(algebra::saturation(gens, second));
+        return print_basis(algebra::saturation(gens, second, options));
     }
     if (op == "contains") {
-        return answer(algebra::ideal_contains(gens, second));
+        return answer(algebra::ideal_contains(gens, second, options));
     }
     if (op == "equal") {
-        return answer(algebra::ideal_equal(gens, second));
+        return answer(algebra::ideal_equal(gens, second, options));
     }
     throw CommandFailure(exit_input, "ideal: unknown operation '" + op + "'");
+}
+
+int run_ideal(const IdealArgs& args) {
+    algebra::GroebnerOptions options;
+    options.deadline = deadline_after(args.timeout_seconds);
+    try {
+        return run_operation(args, options);
+    } catch (const Timeout& e) {
+        throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
+                                               seconds_text(args.timeout_seconds) + ")");
+    }
 }
 
 }  // namespace
@@ -164,6 +178,7 @@ void add_ideal_command(CLI::App& app, int& exit_code) {
     cmd->add_option("argument", args->second, "second ideal file, polynomial or variables");
     cmd->add_option("--order", args->order, "override the first file's order");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
+    cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
     cmd->callback([args, &exit_code] { exit_code = run_ideal(*args); });
 }
 

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "algebra/division.h"
+#include "algebra/error.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
 #include "tests/support/test_data.h"
@@ -65,6 +68,32 @@ TEST(IdealOps, IntersectionQuotientSaturation) {
     // Sum and product.
     EXPECT_EQ(printed(ideal_sum(polys(r, {"x"}), polys(r, {"y"}))), "y;x;");
     EXPECT_EQ(printed(ideal_product(polys(r, {"x", "y"}), polys(r, {"z"}))), "y*z;x*z;");
+}
+
+TEST(IdealOps, EveryOperationStopsWithATimeoutAtTheDeadline) {
+    const RingPtr r = xyz();
+    // Leading monomials x², x·y, y² (grevlex): S-pairs to reduce, so a deadline is polled.
+    const auto i = polys(r, {"x^2-y*z-1", "x*y-z^2-2", "x*z-y^2-3"});
+    const auto j = polys(r, {"y^3-x", "z^3-y"});
+    GroebnerOptions passed;
+    passed.deadline = std::chrono::steady_clock::now();
+    const std::size_t x[] = {0};
+    const Polynomial f = parse_polynomial("x*y-z", r);
+    EXPECT_THROW(ideal_membership(f, i, passed), Timeout);
+    EXPECT_THROW(radical_membership(f, i, passed), Timeout);
+    EXPECT_THROW(eliminate(i, x, passed), Timeout);
+    EXPECT_THROW(ideal_sum(i, j, passed), Timeout);
+    EXPECT_THROW(ideal_product(i, j, passed), Timeout);
+    EXPECT_THROW(ideal_intersection(i, j, passed), Timeout);
+    EXPECT_THROW(ideal_quotient(i, j, passed), Timeout);
+    EXPECT_THROW(saturation(i, j, passed), Timeout);
+    EXPECT_THROW(ideal_contains(i, j, passed), Timeout);
+    EXPECT_THROW(ideal_equal(i, j, passed), Timeout);
+    EXPECT_THROW(zero_dimension_test(i, passed), Timeout);
+    // A deadline far ahead changes nothing.
+    GroebnerOptions later;
+    later.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+    EXPECT_EQ(printed(ideal_intersection(i, j, later)), printed(ideal_intersection(i, j)));
 }
 
 TEST(IdealOps, IntersectionIsContainedInBothAndContainsTheProduct) {
