@@ -364,7 +364,14 @@ DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions
     }
     std::vector<std::uint32_t> e(n, 0);
     std::size_t count = 0;
+    // The box holds the product of the pure powers, which can be large (degree 10 in 10
+    // variables: 10^10 points): the deadline is read every 2^16 points.
+    std::uint64_t visited = 0;
     while (true) {
+        if (options.deadline && (++visited & 0xffff) == 0 &&
+            std::chrono::steady_clock::now() >= *options.deadline) {
+            throw Timeout("counting the standard monomials was not complete at the deadline");
+        }
         const bool standard = std::none_of(leading.begin(), leading.end(), [&](const auto& lm) {
             for (std::size_t v = 0; v < n; ++v) {
                 if (lm[v] > e[v]) {
