@@ -89,31 +89,48 @@ RunTimes time_surf(const std::string& surf, const SuiteSurface& s, int size) {
         std::filesystem::remove(script);
         return status == 0 ? seconds : -1.0;
     };
-    // Median of repeated runs (at least 5, at least 0.2 s), as for locus' own figures: a single
-    // surf run at 256² takes a few milliseconds, below the noise of one process start, and on a
+    // Repeated runs, at least 5 and 0.2 s of drawing, as for locus' own figures: a single surf
+    // run at 256² takes a few milliseconds, below the noise of one process start, and on a
     // shared machine single runs are sometimes slowed several-fold; the median ignores those.
-    auto repeat = [&](bool draw) {
+    // The start-up runs are as many as the drawing runs: the fastest of a larger sample is
+    // lower, which would shrink the start-up and flatter locus' `best` ratio.
+    auto repeat = [&](bool draw, std::size_t count) {
         std::vector<double> times;
         double sum = 0.0;
         do {
             const double seconds = run(draw);
             if (seconds < 0) {
-                return RunTimes{};
+                return std::vector<double>{};
             }
             times.push_back(seconds);
             sum += seconds;
-        } while (times.size() < 5 || (sum < 0.2 && times.size() < 50));
-        return RunTimes{median(times), *std::min_element(times.begin(), times.end())};
+        } while (count != 0 ? times.size() < count
+                            : times.size() < 5 || (sum < 0.2 && times.size() < 50));
+        return times;
     };
-    const RunTimes startup = repeat(false);
-    const RunTimes total = repeat(true);
+    const std::vector<double> draws = repeat(true, 0);
     const bool drew = std::filesystem::exists(image);
     std::filesystem::remove(image);
-    if (startup.median < 0 || total.median < 0 || !drew) {
+    const std::vector<double> startups = draws.empty() ? draws : repeat(false, draws.size());
+    if (draws.empty() || startups.empty() || !drew) {
         return RunTimes{};
     }
-    return RunTimes{std::max(total.median - startup.median, 1e-6),
-                    std::max(total.best - startup.best, 1e-6)};
+    // Drawing no slower than starting up means the figure is noise: reported as missing.
+    auto difference = [](double total, double startup) {
+        return total > startup ? total - startup : -1.0;
+    };
+    return RunTimes{difference(median(draws), median(startups)),
+                    difference(*std::min_element(draws.begin(), draws.end()),
+                               *std::min_element(startups.begin(), startups.end()))};
+}
+
+// "0.83": locus' time over surf's, or "-" when surf's is missing.
+std::string ratio_text(double locus, double surf) {
+    char text[16] = "-";
+    if (surf > 0) {
+        std::snprintf(text, sizeof text, "%.2f", locus / surf);
+    }
+    return text;
 }
 
 // A method with one of its settings: the sphere-tracing methods are also run with their
@@ -295,13 +312,6 @@ int run_render_bench(const RenderBenchArgs& args) {
                     label += setting.name;
                 }
                 // ratio: locus / surf by medians; best: by the fastest runs.
-                auto ratio_text = [](double locus, double surf) {
-                    char text[16] = "-";
-                    if (surf > 0) {
-                        std::snprintf(text, sizeof text, "%.2f", locus / surf);
-                    }
-                    return std::string(text);
-                };
                 std::printf(
                     "%-18s %3d %-25s %10.0f %9.2f %8ld %8.3f %11.2e %11.2e %7.2f %9.4f %9s %6s "
                     "%6s\n",
