@@ -120,7 +120,7 @@ void apply_flags(const RenderArgs& args, render::Scene& scene) {
     }
 }
 
-render::Scene build_scene(const RenderArgs& args) {
+render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
     const bool is_scene_file =
         args.input.size() > 5 && args.input.compare(args.input.size() - 5, 5, ".toml") == 0;
     if (args.input.empty() == args.param.empty()) {
@@ -134,7 +134,10 @@ render::Scene build_scene(const RenderArgs& args) {
             if (!args.method.empty()) {
                 method = render::parse_trace_method(args.method);
             }
-            scene = render::parse_scene(read_input(args.input), scene_surface_compiler(), method);
+            scene = render::parse_scene(read_input(args.input), scene_surface_compiler(deadline),
+                                        method);
+        } catch (const Timeout&) {
+            throw;  // an implicitization ran past --timeout: not a fault of the file
         } catch (const Error& e) {
             throw CommandFailure(exit_input, args.input + ": " + e.what());
         } catch (const CommandFailure& e) {
@@ -168,32 +171,35 @@ std::function<void(double)> terminal_fraction_progress() {
 }
 
 int run_render(const RenderArgs& args) {
-    render::Scene scene = build_scene(args);
-    std::vector<render::Aov> aovs;
-    for (const std::string& name : args.aovs) {
-        aovs.push_back(render::parse_aov(name));
-    }
-    const std::vector<algebra::CompiledPolynomial> compiled = compile_surfaces(scene);
+    // The limit covers implicitizing `param` surfaces as well as rendering.
+    const Deadline deadline = deadline_after(args.timeout_seconds);
     render::ExecutionSettings execution;
-    execution.threads = scene.options.threads;
     execution.progress = terminal_fraction_progress();
-    execution.deadline = deadline_after(args.timeout_seconds);
+    execution.deadline = deadline;
     auto clear_progress = [&] {
         if (execution.progress) {
             std::fprintf(stderr, "\r\033[K");
         }
     };
+    render::Scene scene;
+    std::vector<render::Aov> aovs;
     render::RenderStats stats;
     render::RenderedImage image;
     try {
+        scene = build_scene(args, deadline);
+        for (const std::string& name : args.aovs) {
+            aovs.push_back(render::parse_aov(name));
+        }
+        const std::vector<algebra::CompiledPolynomial> compiled = compile_surfaces(scene, deadline);
+        execution.threads = scene.options.threads;
         image = scene.objects.empty()
                     ? render::render(scene, compiled, execution, &stats)
                     : render::render_sdf_scene(scene, compiled, execution, &stats);
     } catch (const Timeout& e) {
         clear_progress();
-        throw CommandFailure(exit_timeout, std::string(e.what()) + " after " +
+        throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
                                                seconds_text(args.timeout_seconds) +
-                                               "; no image written");
+                                               "); no image written");
     }
     clear_progress();
     const std::vector<std::string> written = render::write_image(image, args.output, aovs);

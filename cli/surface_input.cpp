@@ -10,7 +10,7 @@
 
 namespace locus::cli {
 
-std::string implicit_equation_of(const std::string& param_path) {
+std::string implicit_equation_of(const std::string& param_path, Deadline deadline) {
     const std::string text = read_input(param_path);
     implicit::Parametrization map;
     try {
@@ -23,7 +23,9 @@ std::string implicit_equation_of(const std::string& param_path) {
                                              ": rendering needs a surface: two parameters and "
                                              "coordinates x, y, z");
     }
-    const implicit::ImplicitResult result = implicit::implicitize_auto(map);
+    algebra::GroebnerOptions options;
+    options.deadline = deadline;
+    const implicit::ImplicitResult result = implicit::implicitize_auto(map, options);
     if (!result.equation) {
         throw CommandFailure(exit_input, param_path + ": " +
                                              implicit::describe_image(result.image, 2, 3) +
@@ -57,27 +59,27 @@ algebra::CompiledPolynomial compile_equation(const std::string& name, const std:
     return compiled;
 }
 
-std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene) {
+std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene, Deadline deadline) {
     std::vector<algebra::CompiledPolynomial> compiled;
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         render::Surface& surface = scene.surfaces[i];
         const std::string name = "surface[" + std::to_string(i + 1) + "]";
         if (!surface.param_file.empty()) {
-            surface.equation = implicit_equation_of(surface.param_file);
+            surface.equation = implicit_equation_of(surface.param_file, deadline);
         }
         compiled.push_back(compile_equation(name + ".equation", surface.equation, "rendering"));
     }
     return compiled;
 }
 
-render::SurfaceCompiler scene_surface_compiler() {
-    return [](const render::AlgebraicSource& source) {
+render::SurfaceCompiler scene_surface_compiler(Deadline deadline) {
+    return [deadline](const render::AlgebraicSource& source) {
         if (source.param_file.empty()) {
             return compile_equation(source.key + ".equation", source.equation, "rendering");
         }
         std::string equation;
         try {
-            equation = implicit_equation_of(source.param_file);
+            equation = implicit_equation_of(source.param_file, deadline);
         } catch (const CommandFailure& e) {
             throw CommandFailure(e.code(), source.key + ".param: " + e.what());
         }

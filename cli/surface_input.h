@@ -2,6 +2,8 @@
 // polynomials, shared by `locus render`, `locus trace` and `locus bench render`.
 #pragma once
 
+#include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +12,13 @@
 
 namespace locus::cli {
 
+using Deadline = std::optional<std::chrono::steady_clock::time_point>;
+
 // The implicit equation of the parametrization in `param_path` (implicitize --method auto),
 // verified by substitution; reports the route and the equation on standard error. Throws
 // CommandFailure: exit 2 for bad input or an image that is not a surface, 4 when verification
-// fails.
-std::string implicit_equation_of(const std::string& param_path);
+// fails; Timeout when the implicitization passes `deadline`.
+std::string implicit_equation_of(const std::string& param_path, Deadline deadline = std::nullopt);
 
 // Compiles one equation; errors become CommandFailure (exit 2) prefixed with `name`, and a
 // replacement by the square-free part is reported on standard error ("NAME: ... `use` its
@@ -25,10 +29,11 @@ algebra::CompiledPolynomial compile_equation(const std::string& name, const std:
 // Resolves `param` surfaces to equations, then compiles every surface; errors name the surface
 // (`surface[2].equation: line 1, column 5: ...`). Reports on standard error when an equation
 // was replaced by its square-free part.
-std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene);
+std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene,
+                                                          Deadline deadline = std::nullopt);
 
 // The compiler for algebraic leaves of scene trees: implicitizes `param` files as above and
 // compiles with the same reports; errors name the leaf ("object[2].equation: ...").
-render::SurfaceCompiler scene_surface_compiler();
+render::SurfaceCompiler scene_surface_compiler(Deadline deadline = std::nullopt);
 
 }  // namespace locus::cli
