@@ -20,13 +20,14 @@ const RingPtr& ring_of(Generators g, const char* what) {
     return g[0].ring();
 }
 
-// Throws Timeout unless the run completed: every operation here needs the whole basis.
+// Throws unless the run completed (Timeout at the deadline, Error past the size limit):
+// every operation here needs the whole basis.
 void require_complete(const GroebnerResult& r) {
     if (r.outcome == GroebnerOutcome::stopped_timeout) {
         throw Timeout("a Gröbner basis was not complete at the deadline");
     }
     if (r.outcome != GroebnerOutcome::complete) {
-        throw Timeout("a Gröbner basis outgrew the size limit");
+        throw Error("a Gröbner basis outgrew options.max_basis_size");
     }
 }
 
@@ -365,10 +366,11 @@ DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions
     std::vector<std::uint32_t> e(n, 0);
     std::size_t count = 0;
     // The box holds the product of the pure powers, which can be large (degree 10 in 10
-    // variables: 10^10 points): the deadline is read every 2^16 points.
+    // variables: 10^10 points): the deadline is read every 2^12 points (each costs a pass over
+    // the leading monomials).
     std::uint64_t visited = 0;
     while (true) {
-        if (options.deadline && (++visited & 0xffff) == 0 &&
+        if (options.deadline && (++visited & 0xfff) == 0 &&
             std::chrono::steady_clock::now() >= *options.deadline) {
             throw Timeout("counting the standard monomials was not complete at the deadline");
         }

@@ -1,8 +1,10 @@
 // Ideal operations over Q built on Gröbner bases (Cox–Little–O'Shea, IVA ch. 3–4; Becker–
 // Weispfenning ch. 6). An ideal is given by generators in one ring; results are reduced Gröbner
 // bases under that ring's order (normalized as in print.h), so they can be compared directly.
-// `options` reach every Gröbner basis an operation computes; when one stops early (its
-// deadline or size limit) the operation throws Timeout, as none can use a partial basis.
+// `options` reach every Gröbner basis an operation computes; none can use a partial basis, so
+// one stopped at options.deadline throws Timeout (and one past options.max_basis_size,
+// Error). The cofactor search of ideal_membership (a plain Buchberger run that tracks
+// cofactors) honours only the deadline, read before each S-pair.
 //
 // Auxiliary variables (intersection, saturation, radical membership) are added in a larger ring
 // with a fresh name and eliminated; they never appear in a result.

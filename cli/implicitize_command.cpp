@@ -78,10 +78,8 @@ int run_implicitize(const ImplicitizeArgs& args) {
         });
         if (outcome.timed_out) {
             finish_progress();
-            char message[96];
-            std::snprintf(message, sizeof message,
-                          "timeout: the resultant route stopped after %g s", args.timeout_seconds);
-            throw CommandFailure(exit_timeout, message);
+            throw CommandFailure(exit_timeout, "timeout: the resultant route stopped after " +
+                                                   seconds_text(args.timeout_seconds));
         }
         if (!outcome.text || outcome.text->empty()) {
             throw Error("the resultant route failed in its child process");

@@ -90,10 +90,48 @@ TEST(IdealOps, EveryOperationStopsWithATimeoutAtTheDeadline) {
     EXPECT_THROW(ideal_contains(i, j, passed), Timeout);
     EXPECT_THROW(ideal_equal(i, j, passed), Timeout);
     EXPECT_THROW(zero_dimension_test(i, passed), Timeout);
+    try {
+        ideal_quotient(i, j, passed);
+    } catch (const Timeout& e) {
+        EXPECT_STREQ(e.what(), "timeout: a Gröbner basis was not complete at the deadline");
+    }
+    // Pure powers: a Gröbner basis at once, no S-pair to poll the deadline; the count of the
+    // 20³ standard monomials reads it.
+    try {
+        zero_dimension_test(polys(r, {"x^20", "y^20", "z^20"}), passed);
+        ADD_FAILURE() << "counting 8000 standard monomials ignored a passed deadline";
+    } catch (const Timeout& e) {
+        EXPECT_STREQ(e.what(),
+                     "timeout: counting the standard monomials was not complete at the deadline");
+    }
     // A deadline far ahead changes nothing.
     GroebnerOptions later;
     later.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
     EXPECT_EQ(printed(ideal_intersection(i, j, later)), printed(ideal_intersection(i, j)));
+}
+
+// The options must reach the nested Gröbner runs too (quotient: intersections of
+// intersections), not only the first: counted through the progress callback, which every run
+// with an S-pair calls with pairs_done == 1. The counts follow the constructions in
+// ideal_ops.cpp; a run left without the options is missing from them.
+TEST(IdealOps, OptionsReachEveryNestedGroebnerRun) {
+    const RingPtr r = xyz();
+    const auto i = polys(r, {"x^2-y*z-1", "x*y-z^2-2", "x*z-y^2-3"});
+    const auto j = polys(r, {"y^3-x*z", "y^2*z-x"});  // y³ and y²z: an S-pair of its own
+    std::size_t runs = 0;
+    GroebnerOptions counting;
+    counting.progress = [&](const GroebnerProgress& p) { runs += p.pairs_done == 1 ? 1 : 0; };
+    auto runs_of = [&](auto&& operation) {
+        runs = 0;
+        operation();
+        return runs;
+    };
+    const std::size_t x[] = {0};
+    EXPECT_EQ(runs_of([&] { eliminate(i, x, counting); }), 1u);
+    EXPECT_EQ(runs_of([&] { ideal_intersection(i, j, counting); }), 2u);
+    EXPECT_EQ(runs_of([&] { ideal_quotient(i, j, counting); }), 5u);
+    EXPECT_EQ(runs_of([&] { saturation(i, j, counting); }), 3u);
+    EXPECT_EQ(runs_of([&] { ideal_equal(i, i, counting); }), 2u);  // both inclusions
 }
 
 TEST(IdealOps, IntersectionIsContainedInBothAndContainsTheProduct) {

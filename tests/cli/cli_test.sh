@@ -127,6 +127,9 @@ expect "render: unknown node type names the node" 2 "badtree.toml: line 4, colum
     "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
 expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
     "$locus" bench sdf --size 16 --min-seconds 0 --csv
+expect "render --timeout covers implicitizing --param" 3 "no image written" -- \
+    "$locus" render --param bench/data/implicit/bezier_triangle3.param --timeout 0.01 \
+    -o "$tmp/bezier.png" --size 16x16
 expect "render timeout exits 3 and writes nothing" 3 "no image written" -- \
     "$locus" render "x^2+y^2+z^2-1" --method exact --size 400x400 --samples 3 --timeout 0.05 \
     -o "$tmp/timeout.png"
@@ -135,8 +138,18 @@ if [[ -e "$tmp/timeout.png" ]]; then
 fi
 expect "bench render compares sturm with exact, ray by ray" 0 "sphere,2,sturm,default,0,64," -- \
     "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
-expect "bench render reports the fastest runs too" 0 "render_best_seconds,surf_best_seconds" -- \
+expect "bench render CSV header names the fastest runs" 0 "render_best_seconds,surf_best_seconds" -- \
     "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
+# The data row: 19 fields, no wrong ray, and without surf its two figures missing (-1) around
+# locus' fastest frame.
+bench_row=$("$locus" bench render --size 8 --cases sphere --methods sturm --surf off \
+    --min-seconds 0 --csv 2>/dev/null | grep '^sphere,2,sturm,')
+if [[ $(head -1 <<<"$bench_row" | awk -F, '{print NF}') != 19 ]] ||
+    ! grep -qE '^sphere,2,sturm,default,0,64,[^,]+,[^,]+,[^,]+,0,0,0,.*,-1,[0-9.e+-]+,-1$' <<<"$bench_row"; then
+    echo "FAIL bench render CSV row: $bench_row"; failures=$((failures + 1))
+else
+    echo "ok   bench render CSV row"
+fi
 expect "resultant honours --timeout" 3 "timeout: the resultant route stopped after 1 s" -- \
     "$locus" implicitize bench/data/implicit/bezier_triangle3.param --method resultant --timeout 1
 expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z" -- \
