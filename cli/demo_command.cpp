@@ -135,7 +135,9 @@ int run_demo(const std::string& output) {
             return algebra::compile_surface(source.equation);
         });
     render::RenderStats stats;
-    const render::RenderedImage image = render::render_sdf_scene(scene, {}, {}, &stats);
+    render::ExecutionSettings execution;
+    execution.aovs = false;  // the demo writes the picture only
+    const render::RenderedImage image = render::render_sdf_scene(scene, {}, execution, &stats);
     render::write_image(image, output);
     std::printf(
         "\nRendered %dx%d in an SDF scene (the surface by Sturm isolation, five primitives "

@@ -244,7 +244,9 @@ int run_render_bench(const RenderBenchArgs& args) {
         double render_total = 0.0;
         do {
             render::RenderStats stats;
-            render::render(scene, compiled, {}, &stats);
+            render::ExecutionSettings execution;
+            execution.aovs = false;  // as `locus render` without --aov
+            render::render(scene, compiled, execution, &stats);
             frames.push_back(stats.seconds);
             render_total += stats.seconds;
         } while (frames.size() < 5 || (render_total < args.min_seconds && frames.size() < 50));

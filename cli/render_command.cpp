@@ -190,6 +190,7 @@ int run_render(const RenderArgs& args) {
         for (const std::string& name : args.aovs) {
             aovs.push_back(render::parse_aov(name));
         }
+        execution.aovs = !aovs.empty();
         const std::vector<algebra::CompiledPolynomial> compiled = compile_surfaces(scene, deadline);
         execution.threads = scene.options.threads;
         image = scene.objects.empty()

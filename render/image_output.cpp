@@ -80,6 +80,11 @@ Aov parse_aov(const std::string& name) {
 
 std::vector<std::string> write_image(const RenderedImage& image, const std::string& path,
                                      const std::vector<Aov>& aovs) {
+    if (!aovs.empty() && image.depth.empty()) {
+        throw Error(
+            "write_image: AOVs asked for an image rendered without them "
+            "(ExecutionSettings::aovs)");
+    }
     std::vector<std::string> written;
     if (is_float_format(path)) {
         write_channels(path, image.width, image.height, 3, image.color.data(), true, true);

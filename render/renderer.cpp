@@ -37,7 +37,7 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         uses_family = uses_family && f.degree() <= kMaxFamilyDegree;
     }
 
-    RenderedImage image = detail::blank_image(scene.width, scene.height);
+    RenderedImage image = detail::blank_image(scene.width, scene.height, execution.aovs);
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
 
     const int k = scene.options.samples;

@@ -13,15 +13,17 @@
 
 namespace locus::render::detail {
 
-RenderedImage blank_image(int width, int height) {
+RenderedImage blank_image(int width, int height, bool aovs) {
     RenderedImage image;
     image.width = width;
     image.height = height;
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     image.color.assign(3 * pixels, 0.0f);
-    image.depth.assign(pixels, INFINITY);
-    image.normal.assign(3 * pixels, 0.0f);
-    image.work.assign(pixels, 0.0f);
+    if (aovs) {
+        image.depth.assign(pixels, INFINITY);
+        image.normal.assign(3 * pixels, 0.0f);
+        image.work.assign(pixels, 0.0f);
+    }
     return image;
 }
 
@@ -42,6 +44,11 @@ void store_pixel(RenderedImage& image, std::size_t p, const Vec3& color, const V
                  double depth, double work) {
     for (int c = 0; c < 3; ++c) {
         image.color[3 * p + c] = static_cast<float>(color[c]);
+    }
+    if (image.depth.empty()) {
+        return;
+    }
+    for (int c = 0; c < 3; ++c) {
         image.normal[3 * p + c] = static_cast<float>(normal[c]);
     }
     image.depth[p] = static_cast<float>(depth);

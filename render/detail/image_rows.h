@@ -10,8 +10,8 @@
 
 namespace locus::render::detail {
 
-// Black colour, infinite depth, zero normals and work.
-RenderedImage blank_image(int width, int height);
+// Black colour and, with `aovs`, infinite depth, zero normals and work (else those stay empty).
+RenderedImage blank_image(int width, int height, bool aovs);
 
 // A frame's counts, added to by rows on any thread, and reported as RenderStats.
 struct FrameCounters {
@@ -26,8 +26,8 @@ struct FrameCounters {
                 long primary_rays) const;
 };
 
-// Writes pixel p: the colour (already averaged over the samples), the normal and depth of the
-// nearest hit, and the work spent.
+// Writes pixel p: the colour (already averaged over the samples) and, when the image has its
+// AOVs, the normal and depth of the nearest hit and the work spent.
 void store_pixel(RenderedImage& image, std::size_t p, const Vec3& color, const Vec3& normal,
                  double depth, double work);
 

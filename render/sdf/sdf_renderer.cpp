@@ -134,7 +134,7 @@ RenderedImage render_sdf_scene(const Scene& scene,
                              glm::length(camera.direction(0.5 * scene.width, 0.5 * scene.height)) /
                              k;
 
-    RenderedImage image = detail::blank_image(scene.width, scene.height);
+    RenderedImage image = detail::blank_image(scene.width, scene.height, execution.aovs);
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
     detail::FrameCounters frame;
 

@@ -82,6 +82,19 @@ TEST(Render, NoPixelIsNanAtSingularPoints) {
     }
 }
 
+TEST(Render, WithoutAovsTheColourIsTheSameAndTheAovsStayEmpty) {
+    const Scene scene = sphere_scene(TraceMethod::sturm);
+    const std::vector<algebra::CompiledPolynomial> surfaces = {
+        algebra::compile_surface("x^2+y^2+z^2-1")};
+    ExecutionSettings colour_only;
+    colour_only.aovs = false;
+    const RenderedImage image = render(scene, surfaces, colour_only);
+    const RenderedImage full = render(scene, surfaces, {});
+    EXPECT_EQ(image.color, full.color);
+    EXPECT_TRUE(image.depth.empty() && image.normal.empty() && image.work.empty());
+    EXPECT_EQ(full.depth.size(), static_cast<std::size_t>(scene.width) * scene.height);
+}
+
 TEST(Render, DeadlineStopsTheFrameWithATimeout) {
     const Scene scene = sphere_scene(TraceMethod::sturm);
     const std::vector<algebra::CompiledPolynomial> surfaces = {
