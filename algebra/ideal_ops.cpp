@@ -6,6 +6,7 @@
 #include "algebra/division.h"
 #include "algebra/error.h"
 #include "algebra/groebner/verify.h"
+#include "algebra/standard_monomials.h"
 
 namespace locus::algebra {
 namespace {
@@ -357,42 +358,15 @@ DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions
         return report;
     }
     report.kind = Dimension::zero_dimensional;
-    // Count standard monomials: exponent vectors below the pure powers that no leading
-    // monomial divides (an odometer over the box).
-    std::vector<std::vector<std::uint32_t>> leading;
+    std::vector<ExponentVector> leading;
     for (const auto& g : basis) {
         leading.push_back(g.exponents(0));
     }
-    std::vector<std::uint32_t> e(n, 0);
-    std::size_t count = 0;
-    // The box holds the product of the pure powers, which can be large (degree 10 in 10
-    // variables: 10^10 points): the deadline is read every 2^12 points (each costs a pass over
-    // the leading monomials).
-    std::uint64_t visited = 0;
-    while (true) {
-        if (options.deadline && (++visited & 0xfff) == 0 &&
-            std::chrono::steady_clock::now() >= *options.deadline) {
-            throw Timeout("counting the standard monomials was not complete at the deadline");
-        }
-        const bool standard = std::none_of(leading.begin(), leading.end(), [&](const auto& lm) {
-            for (std::size_t v = 0; v < n; ++v) {
-                if (lm[v] > e[v]) {
-                    return false;
-                }
-            }
-            return true;
-        });
-        count += standard ? 1 : 0;
-        std::size_t v = 0;
-        while (v < n && ++e[v] == pure_power[v]) {
-            e[v] = 0;
-            ++v;
-        }
-        if (v == n) {
-            break;
-        }
+    const Integer count = count_standard_monomials(std::move(leading), n, options.deadline);
+    if (!fmpz_abs_fits_ui(count.get())) {
+        throw InputError("dimension", "more than 2^64 solutions, too many to report");
     }
-    report.quotient_dimension = count;
+    report.quotient_dimension = static_cast<std::size_t>(fmpz_get_ui(count.get()));
     return report;
 }
 

@@ -95,15 +95,6 @@ TEST(IdealOps, EveryOperationStopsWithATimeoutAtTheDeadline) {
     } catch (const Timeout& e) {
         EXPECT_STREQ(e.what(), "timeout: a Gröbner basis was not complete at the deadline");
     }
-    // Pure powers: a Gröbner basis at once, no S-pair to poll the deadline; the count of the
-    // 20³ standard monomials reads it.
-    try {
-        zero_dimension_test(polys(r, {"x^20", "y^20", "z^20"}), passed);
-        ADD_FAILURE() << "counting 8000 standard monomials ignored a passed deadline";
-    } catch (const Timeout& e) {
-        EXPECT_STREQ(e.what(),
-                     "timeout: counting the standard monomials was not complete at the deadline");
-    }
     // A deadline far ahead changes nothing.
     GroebnerOptions later;
     later.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);

@@ -62,7 +62,7 @@ expect "timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/cyclic6.ide
 expect "modular timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/katsura9.ideal --timeout 0.2
 expect "ideal operations honour --timeout" 3 "not complete at the deadline" -- "$locus" ideal dimension bench/data/katsura9.ideal --timeout 0.05
 printf 'vars: a,b,c,d,e,f,g,h\norder: grevlex\na^12\nb^12\nc^12\nd^12\ne^12\nf^12\ng^12\nh^12\n' >"$tmp/box.ideal"
-expect "dimension's monomial count honours --timeout" 3 "counting the standard monomials" -- "$locus" ideal dimension "$tmp/box.ideal" --timeout 0.2
+expect "dimension counts a box of 12^8 standard monomials at once" 0 "zero-dimensional: 429981696 solutions" -- "$locus" ideal dimension "$tmp/box.ideal" --timeout 5
 expect "modular result is certified" 0 "certified over Q" -- "$locus" groebner bench/data/cyclic6.ideal --algorithm modular --stats
 expect "f4 modulo a prime" 0 "x0+2*x1+2*x2+2*x3+2*x4+65520" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65521
 expect "f4: not a prime" 2 "expected a prime below 2^31" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65520

@@ -1,0 +1,119 @@
+#include "algebra/standard_monomials.h"
+
+#include <algorithm>
+
+#include "algebra/error.h"
+
+namespace locus::algebra {
+namespace {
+
+bool divides(const ExponentVector& a, const ExponentVector& b) {
+    for (std::size_t v = 0; v < a.size(); ++v) {
+        if (a[v] > b[v]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Drops generators that another one divides (and duplicates).
+void minimalize(std::vector<ExponentVector>& generators) {
+    std::sort(generators.begin(), generators.end());
+    generators.erase(std::unique(generators.begin(), generators.end()), generators.end());
+    std::vector<ExponentVector> kept;
+    for (std::size_t i = 0; i < generators.size(); ++i) {
+        bool redundant = false;
+        for (std::size_t j = 0; j < generators.size() && !redundant; ++j) {
+            redundant = j != i && divides(generators[j], generators[i]);
+        }
+        if (!redundant) {
+            kept.push_back(generators[i]);  // a copy: later rounds still divide by it
+        }
+    }
+    generators = std::move(kept);
+}
+
+class Counter {
+  public:
+    Counter(std::size_t n, std::optional<std::chrono::steady_clock::time_point> deadline)
+        : n_(n), deadline_(deadline) {}
+
+    Integer count(std::vector<ExponentVector> generators) {
+        if (deadline_ && (++calls_ & 0xff) == 0 && std::chrono::steady_clock::now() >= *deadline_) {
+            throw Timeout("counting the standard monomials was not complete at the deadline");
+        }
+        minimalize(generators);
+        std::vector<std::uint32_t> pure(n_, 0);
+        std::vector<std::size_t> mixed_uses(n_, 0);
+        bool any_mixed = false;
+        for (const ExponentVector& g : generators) {
+            std::size_t support = 0, variable = 0;
+            for (std::size_t v = 0; v < n_; ++v) {
+                if (g[v] != 0) {
+                    ++support;
+                    variable = v;
+                }
+            }
+            if (support == 0) {
+                return Integer(0);  // the unit ideal: nothing is standard
+            }
+            if (support == 1) {
+                pure[variable] = g[variable];  // minimal: one pure power per variable
+                continue;
+            }
+            any_mixed = true;
+            for (std::size_t v = 0; v < n_; ++v) {
+                mixed_uses[v] += g[v] != 0 ? 1 : 0;
+            }
+        }
+        if (std::any_of(pure.begin(), pure.end(), [](std::uint32_t d) { return d == 0; })) {
+            throw InputError("standard monomials", "the monomial ideal is not zero-dimensional");
+        }
+        if (!any_mixed) {
+            Integer product(1);
+            for (std::uint32_t d : pure) {
+                fmpz_mul_ui(product.get(), product.get(), d);
+            }
+            return product;
+        }
+        // The pivot: the variable in most mixed generators, which shrinks both branches most.
+        const auto x = static_cast<std::size_t>(
+            std::max_element(mixed_uses.begin(), mixed_uses.end()) - mixed_uses.begin());
+        std::vector<ExponentVector> plus_x;                // M + ⟨x⟩
+        std::vector<ExponentVector> colon_x = generators;  // M : x
+        for (const ExponentVector& g : generators) {
+            if (g[x] == 0) {
+                plus_x.push_back(g);
+            }
+        }
+        ExponentVector x_itself(n_, 0);
+        x_itself[x] = 1;
+        plus_x.push_back(std::move(x_itself));
+        for (ExponentVector& g : colon_x) {
+            g[x] = g[x] > 0 ? g[x] - 1 : 0;
+        }
+        Integer total = count(std::move(plus_x));
+        const Integer with_x = count(std::move(colon_x));
+        fmpz_add(total.get(), total.get(), with_x.get());
+        return total;
+    }
+
+  private:
+    std::size_t n_;
+    std::optional<std::chrono::steady_clock::time_point> deadline_;
+    std::uint64_t calls_ = 0;
+};
+
+}  // namespace
+
+Integer count_standard_monomials(std::vector<ExponentVector> generators, std::size_t n,
+                                 std::optional<std::chrono::steady_clock::time_point> deadline) {
+    for (const ExponentVector& g : generators) {
+        if (g.size() != n) {
+            throw InputError("standard monomials", "an exponent vector of the wrong length");
+        }
+    }
+    return Counter(n, deadline).count(std::move(generators));
+}
+
+}  // namespace locus::algebra
