@@ -52,6 +52,7 @@ algebra::Polynomial polynomial_argument(const std::string& text, const algebra::
 }
 
 int answer(bool yes) {
+    finish_progress();
     std::cout << (yes ? "yes" : "no") << "\n";
     return yes ? exit_ok : exit_no;
 }
@@ -65,6 +66,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
         throw CommandFailure(exit_input, args.first + ": the ideal has no generators");
     }
     auto print_basis = [&](const std::vector<algebra::Polynomial>& basis) {
+        finish_progress();
         std::cout << algebra::format_polynomials(basis, *ring, format);
         return exit_ok;
     };
@@ -76,6 +78,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     if (op == "member") {
         const auto cert =
             algebra::ideal_membership(polynomial_argument(args.second, ring), gens, options);
+        finish_progress();
         if (!cert.is_member) {
             std::cout << "no\nremainder: " << algebra::to_string(cert.remainder) << "\n";
             return exit_no;
@@ -104,6 +107,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     }
     if (op == "dimension") {
         const auto report = algebra::zero_dimension_test(gens, options);
+        finish_progress();
         switch (report.kind) {
         case algebra::Dimension::unit_ideal:
             std::cout << "unit ideal (no solutions)\n";
@@ -146,6 +150,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
 int run_ideal(const IdealArgs& args) {
     algebra::GroebnerOptions options;
     options.deadline = deadline_after(args.timeout_seconds);
+    options.progress = terminal_progress("ideal " + args.operation);
     try {
         return run_operation(args, options);
     } catch (const Timeout& e) {
