@@ -339,29 +339,15 @@ DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions
         return report;
     }
     const std::size_t n = ring->num_vars();
-    std::vector<std::uint32_t> pure_power(n, 0);  // least d with x_v^d a leading monomial
-    for (const auto& g : basis) {
-        const auto e = g.exponents(0);
-        std::size_t nonzero = 0, var = 0;
-        for (std::size_t v = 0; v < n; ++v) {
-            if (e[v] != 0) {
-                ++nonzero;
-                var = v;
-            }
-        }
-        if (nonzero == 1 && (pure_power[var] == 0 || e[var] < pure_power[var])) {
-            pure_power[var] = e[var];
-        }
-    }
-    if (std::any_of(pure_power.begin(), pure_power.end(), [](std::uint32_t d) { return d == 0; })) {
-        report.kind = Dimension::positive;
-        return report;
-    }
-    report.kind = Dimension::zero_dimensional;
     std::vector<ExponentVector> leading;
     for (const auto& g : basis) {
         leading.push_back(g.exponents(0));
     }
+    if (!has_finitely_many_standard_monomials(leading, n)) {
+        report.kind = Dimension::positive;
+        return report;
+    }
+    report.kind = Dimension::zero_dimensional;
     const Integer count = count_standard_monomials(std::move(leading), n, options.deadline);
     if (!fmpz_abs_fits_ui(count.get())) {
         throw InputError("dimension", "more than 2^64 solutions, too many to report");

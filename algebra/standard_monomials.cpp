@@ -16,6 +16,23 @@ bool divides(const ExponentVector& a, const ExponentVector& b) {
     return true;
 }
 
+// How many variables g involves, and the last of them.
+struct Support {
+    std::size_t size = 0;
+    std::size_t variable = 0;
+};
+
+Support support_of(const ExponentVector& g) {
+    Support support;
+    for (std::size_t v = 0; v < g.size(); ++v) {
+        if (g[v] != 0) {
+            ++support.size;
+            support.variable = v;
+        }
+    }
+    return support;
+}
+
 // Drops generators that another one divides (and duplicates).
 void minimalize(std::vector<ExponentVector>& generators) {
     std::sort(generators.begin(), generators.end());
@@ -47,27 +64,20 @@ class Counter {
         std::vector<std::size_t> mixed_uses(n_, 0);
         bool any_mixed = false;
         for (const ExponentVector& g : generators) {
-            std::size_t support = 0, variable = 0;
-            for (std::size_t v = 0; v < n_; ++v) {
-                if (g[v] != 0) {
-                    ++support;
-                    variable = v;
-                }
-            }
-            if (support == 0) {
+            const Support support = support_of(g);
+            if (support.size == 0) {
                 return Integer(0);  // the unit ideal: nothing is standard
             }
-            if (support == 1) {
-                pure[variable] = g[variable];  // minimal: one pure power per variable
+            if (support.size == 1) {
+                // Minimal: one pure power per variable, and every variable keeps one (both
+                // M + ⟨x⟩ and M : x keep the others' and give x its own).
+                pure[support.variable] = g[support.variable];
                 continue;
             }
             any_mixed = true;
             for (std::size_t v = 0; v < n_; ++v) {
                 mixed_uses[v] += g[v] != 0 ? 1 : 0;
             }
-        }
-        if (std::any_of(pure.begin(), pure.end(), [](std::uint32_t d) { return d == 0; })) {
-            throw InputError("standard monomials", "the monomial ideal is not zero-dimensional");
         }
         if (!any_mixed) {
             Integer product(1);
@@ -106,12 +116,30 @@ class Counter {
 
 }  // namespace
 
+bool has_finitely_many_standard_monomials(const std::vector<ExponentVector>& generators,
+                                          std::size_t n) {
+    std::vector<bool> has_pure_power(n, false);
+    for (const ExponentVector& g : generators) {
+        const Support support = support_of(g);
+        if (support.size == 0) {
+            return true;
+        }
+        if (support.size == 1) {
+            has_pure_power[support.variable] = true;
+        }
+    }
+    return std::all_of(has_pure_power.begin(), has_pure_power.end(), [](bool b) { return b; });
+}
+
 Integer count_standard_monomials(std::vector<ExponentVector> generators, std::size_t n,
                                  std::optional<std::chrono::steady_clock::time_point> deadline) {
     for (const ExponentVector& g : generators) {
         if (g.size() != n) {
             throw InputError("standard monomials", "an exponent vector of the wrong length");
         }
+    }
+    if (!has_finitely_many_standard_monomials(generators, n)) {
+        throw InputError("standard monomials", "the monomial ideal is not zero-dimensional");
     }
     return Counter(n, deadline).count(std::move(generators));
 }

@@ -13,8 +13,14 @@ namespace locus::algebra {
 
 using ExponentVector = std::vector<std::uint32_t>;
 
-// The number of monomials in n variables that no generator divides. Every variable must have a
-// pure power among the generators (the ideal is zero-dimensional), else InputError. Splits on a
+// Whether finitely many monomials in n variables escape the generators: some generator is 1,
+// or every variable has a pure power among them (CLO ch. 5 §3, Theorem 6, for the leading
+// monomials of a Gröbner basis: the ideal is zero-dimensional or the unit ideal).
+bool has_finitely_many_standard_monomials(const std::vector<ExponentVector>& generators,
+                                          std::size_t n);
+
+// The number of monomials in n variables that no generator divides; InputError unless
+// has_finitely_many_standard_monomials. Splits on a
 // variable x of a mixed generator, N(M) = N(M + ⟨x⟩) + N(M : x) (Bigatti's pivot recursion for
 // Hilbert series, with the pivot a variable): the monomials outside M either avoid x or are x
 // times one outside M : x. A box of pure powers alone is a product, so 12⁸ points cost

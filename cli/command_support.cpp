@@ -98,6 +98,20 @@ std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const st
     };
 }
 
+std::function<void(double)> terminal_fraction_progress(const std::string& label) {
+    if (!isatty(STDERR_FILENO)) {
+        return {};
+    }
+    return [label](double fraction) {
+        const int width = 40;
+        const int filled = static_cast<int>(fraction * width);
+        std::fprintf(stderr, "\r%s [%s%s] %3d%%", label.c_str(), std::string(filled, '#').c_str(),
+                     std::string(width - filled, ' ').c_str(), static_cast<int>(100.0 * fraction));
+        std::fflush(stderr);
+        progress_shown = true;
+    };
+}
+
 void finish_progress() {
     if (progress_shown) {
         std::fprintf(stderr, "\r\033[K");

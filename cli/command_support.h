@@ -51,6 +51,9 @@ ChildOutcome run_in_child(double limit_seconds, const std::function<std::string(
 // A progress callback that redraws one line on standard error when it is a terminal (and does
 // nothing otherwise), at most ten times a second; finish_progress() clears the line.
 std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const std::string& label);
+// The same for work measured as a finished fraction: "label [####    ]  50%". Each call draws
+// (the caller throttles); finish_progress() clears this line too.
+std::function<void(double)> terminal_fraction_progress(const std::string& label);
 void finish_progress();
 
 // Is `program` an existing path, or an executable name found in a directory of PATH?

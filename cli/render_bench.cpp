@@ -51,10 +51,13 @@ struct RunTimes {
     double best = -1.0;
 };
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+// The median and the fastest of `times` (not empty).
+RunTimes summary_of(std::vector<double> times) {
+    std::sort(times.begin(), times.end());
+    const std::size_t middle = times.size() / 2;
+    return RunTimes{
+        times.size() % 2 == 1 ? times[middle] : 0.5 * (times[middle - 1] + times[middle]),
+        times.front()};
 }
 
 // Seconds surf takes to draw the surface at size×size (start-up measured with an empty script
@@ -119,9 +122,9 @@ RunTimes time_surf(const std::string& surf, const SuiteSurface& s, int size) {
     auto difference = [](double total, double startup) {
         return total > startup ? total - startup : -1.0;
     };
-    return RunTimes{difference(median(draws), median(startups)),
-                    difference(*std::min_element(draws.begin(), draws.end()),
-                               *std::min_element(startups.begin(), startups.end()))};
+    const RunTimes total = summary_of(draws);
+    const RunTimes startup = summary_of(startups);
+    return RunTimes{difference(total.median, startup.median), difference(total.best, startup.best)};
 }
 
 // "0.83": locus' time over surf's, or "-" when surf's is missing.
@@ -250,8 +253,9 @@ int run_render_bench(const RenderBenchArgs& args) {
             frames.push_back(stats.seconds);
             render_total += stats.seconds;
         } while (frames.size() < 5 || (render_total < args.min_seconds && frames.size() < 50));
-        const double render_seconds = median(frames);
-        const double render_best = *std::min_element(frames.begin(), frames.end());
+        const RunTimes render_times = summary_of(std::move(frames));
+        const double render_seconds = render_times.median;
+        const double render_best = render_times.best;
         const double tolerance = 1e-6 * s.clip_radius;
         const std::vector<double> reference_shade = shade_image(f, camera, reference, args.size);
         for (const Setting& setting : settings_of(methods)) {

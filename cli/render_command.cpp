@@ -1,8 +1,6 @@
 // `locus render EQUATION|SCENE.toml|--param FILE -o out.png [flags]`: ray-trace algebraic
 // surfaces. Flags override the scene file and the defaults (render/scene.h); their names are
 // the interface benchmarks and comparisons with other renderers rely on.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -157,30 +155,12 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
     return scene;
 }
 
-std::function<void(double)> terminal_fraction_progress() {
-    if (!isatty(STDERR_FILENO)) {
-        return {};
-    }
-    return [](double fraction) {
-        const int width = 40;
-        const int filled = static_cast<int>(fraction * width);
-        std::fprintf(stderr, "\rrender [%s%s] %3d%%", std::string(filled, '#').c_str(),
-                     std::string(width - filled, ' ').c_str(), static_cast<int>(100.0 * fraction));
-        std::fflush(stderr);
-    };
-}
-
 int run_render(const RenderArgs& args) {
     // The limit covers implicitizing `param` surfaces as well as rendering.
     const Deadline deadline = deadline_after(args.timeout_seconds);
     render::ExecutionSettings execution;
-    execution.progress = terminal_fraction_progress();
+    execution.progress = terminal_fraction_progress("render");
     execution.deadline = deadline;
-    auto clear_progress = [&] {
-        if (execution.progress) {
-            std::fprintf(stderr, "\r\033[K");
-        }
-    };
     render::Scene scene;
     std::vector<render::Aov> aovs;
     render::RenderStats stats;
@@ -197,12 +177,11 @@ int run_render(const RenderArgs& args) {
                     ? render::render(scene, compiled, execution, &stats)
                     : render::render_sdf_scene(scene, compiled, execution, &stats);
     } catch (const Timeout& e) {
-        clear_progress();
         throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
                                                seconds_text(args.timeout_seconds) +
                                                "); no image written");
     }
-    clear_progress();
+    finish_progress();
     const std::vector<std::string> written = render::write_image(image, args.output, aovs);
     std::fprintf(stderr,
                  "rendered %dx%d, %d×%d samples, method %s: %.3f s, %.2f M primary rays/s, "
