@@ -9,7 +9,8 @@
 // it draws the same surface at the same size in the same run (its own camera and clipping,
 // start-up excluded) for a speed reference, set beside `render s`: the whole picture as
 // `locus render` makes it (sturm, shading without shadows, one sample, all cores). Both are the
-// median of repeated runs, which shrugs off runs slowed by other work on a shared machine.
+// median of repeated runs, which shrugs off runs slowed by other work on a shared machine, and
+// the two programs take turns (time_side_by_side) so that both see the same spells of load.
 #include "cli/render_bench.h"
 
 #include <unistd.h>
@@ -21,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "algebra/error.h"
 #include "bench/surface_suite.h"
@@ -60,71 +62,108 @@ RunTimes summary_of(std::vector<double> times) {
         times.front()};
 }
 
-// Seconds surf takes to draw the surface at size×size (start-up measured with an empty script
-// and subtracted), or negative values when surf is missing or fails.
-RunTimes time_surf(const std::string& surf, const SuiteSurface& s, int size) {
-    const auto dir = std::filesystem::temp_directory_path();
-    const std::string stem = "locus-surf-" + std::to_string(::getpid());
-    const auto image = dir / (stem + ".ppm");
-    auto run = [&](bool draw) {
-        const auto script = dir / (stem + ".pic");
+// One run of surf on the surface at size×size: drawing it (and saving the picture), or, for the
+// start-up that is subtracted, only reading the same script. Seconds, or negative when surf
+// fails or leaves no picture.
+class SurfRun {
+  public:
+    SurfRun(std::string surf, const SuiteSurface& s, int size)
+        : surf_(std::move(surf)), surface_(s), size_(size) {
+        const auto dir = std::filesystem::temp_directory_path();
+        const std::string stem = "locus-surf-" + std::to_string(::getpid());
+        script_ = dir / (stem + ".pic");
+        image_ = dir / (stem + ".ppm");
+    }
+    ~SurfRun() {
+        std::error_code ignored;
+        std::filesystem::remove(script_, ignored);
+        std::filesystem::remove(image_, ignored);
+    }
+    SurfRun(const SurfRun&) = delete;
+    SurfRun& operator=(const SurfRun&) = delete;
+
+    double operator()(bool draw) const {
         {
-            std::ofstream out(script);
+            std::ofstream out(script_);
             // surf's view spans about ±10/scale world units and its clip radius is in those
             // screen units: this frames the clip sphere as locus' default camera does.
-            const double scale = 0.1126 * s.clip_radius;
-            out << "width = " << size << ";\nheight = " << size << ";\n"
-                << "clip = sphere;\nradius = " << s.clip_radius / scale << ";\n"
+            const double scale = 0.1126 * surface_.clip_radius;
+            out << "width = " << size_ << ";\nheight = " << size_ << ";\n"
+                << "clip = sphere;\nradius = " << surface_.clip_radius / scale << ";\n"
                 << "scale_x = " << scale << ";\nscale_y = " << scale << ";\nscale_z = " << scale
                 << ";\n"
-                << "surface = " << s.equation << ";\n";
+                << "surface = " << surface_.equation << ";\n";
             if (draw) {
-                out << "clear_screen;\ndraw_surface;\nfilename = \"" << image.string()
+                out << "clear_screen;\ndraw_surface;\nfilename = \"" << image_.string()
                     << "\";\ncolor_file_format = ppm;\nsave_color_image;\n";
             }
         }
+        std::error_code ignored;
+        std::filesystem::remove(image_, ignored);
         const std::string command =
-            "timeout 120 " + surf + " -n " + script.string() + " >/dev/null 2>&1";
+            "timeout 120 " + surf_ + " -n " + script_.string() + " >/dev/null 2>&1";
         const auto start = std::chrono::steady_clock::now();
         const int status = std::system(command.c_str());
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::filesystem::remove(script);
-        return status == 0 ? seconds : -1.0;
-    };
-    // Repeated runs, at least 5 and 0.2 s of drawing, as for locus' own figures: a single surf
-    // run at 256² takes a few milliseconds, below the noise of one process start, and on a
-    // shared machine single runs are sometimes slowed several-fold; the median ignores those.
-    // The start-up runs are as many as the drawing runs: the fastest of a larger sample is
-    // lower, which would shrink the start-up and flatter locus' `best` ratio.
-    auto repeat = [&](bool draw, std::size_t count) {
-        std::vector<double> times;
-        double sum = 0.0;
-        do {
-            const double seconds = run(draw);
-            if (seconds < 0) {
-                return std::vector<double>{};
-            }
-            times.push_back(seconds);
-            sum += seconds;
-        } while (count != 0 ? times.size() < count
-                            : times.size() < 5 || (sum < 0.2 && times.size() < 50));
-        return times;
-    };
-    const std::vector<double> draws = repeat(true, 0);
-    const bool drew = std::filesystem::exists(image);
-    std::filesystem::remove(image);
-    const std::vector<double> startups = draws.empty() ? draws : repeat(false, draws.size());
-    if (draws.empty() || startups.empty() || !drew) {
-        return RunTimes{};
+        const bool ok = status == 0 && (!draw || std::filesystem::exists(image_));
+        return ok ? seconds : -1.0;
     }
-    // Drawing no slower than starting up means the figure is noise: reported as missing.
-    auto difference = [](double total, double startup) {
-        return total > startup ? total - startup : -1.0;
-    };
-    const RunTimes total = summary_of(draws);
-    const RunTimes startup = summary_of(startups);
-    return RunTimes{difference(total.median, startup.median), difference(total.best, startup.best)};
+
+  private:
+    std::string surf_;
+    const SuiteSurface& surface_;
+    int size_;
+    std::filesystem::path script_, image_;
+};
+
+// locus' picture and surf's, each the median (and the fastest) of repeated runs.
+struct Comparison {
+    RunTimes locus;
+    RunTimes surf;  // negative when surf is absent or failed
+};
+
+// Times `frame` (one locus picture, returning its seconds) beside `surf` (null: locus alone).
+// The two are interleaved in rounds — three locus frames, one surf drawing, one surf start-up —
+// until at least five rounds and `min_seconds` of locus frames have passed (at most 20 rounds),
+// so that both sides are timed across the same stretch of the machine's load: timed one after
+// the other, a slow spell of this shared machine could fall on either side alone, and single
+// surfaces then came out slower or faster than the other program by 15–30 % from run to run.
+// Start-ups run as often as drawings: the fastest of a larger sample is lower, which would
+// shrink the subtracted start-up and flatter locus' `best` ratio. A drawing no slower than a
+// start-up means the figure is noise and is reported as missing.
+template <class Frame>
+Comparison time_side_by_side(Frame frame, const SurfRun* surf, double min_seconds) {
+    std::vector<double> frames, draws, startups;
+    double locus_total = 0.0;
+    bool surf_ok = surf != nullptr;
+    for (int round = 0; round < 20; ++round) {
+        if (round >= 5 && locus_total >= min_seconds) {
+            break;
+        }
+        for (int k = 0; k < 3; ++k) {
+            frames.push_back(frame());
+            locus_total += frames.back();
+        }
+        if (surf_ok) {
+            const double draw = (*surf)(true);
+            const double startup = (*surf)(false);
+            surf_ok = draw >= 0.0 && startup >= 0.0;
+            draws.push_back(draw);
+            startups.push_back(startup);
+        }
+    }
+    Comparison result{summary_of(std::move(frames)), {}};
+    if (surf_ok) {
+        auto difference = [](double total, double startup) {
+            return total > startup ? total - startup : -1.0;
+        };
+        const RunTimes total = summary_of(std::move(draws));
+        const RunTimes startup = summary_of(std::move(startups));
+        result.surf = RunTimes{difference(total.median, startup.median),
+                               difference(total.best, startup.best)};
+    }
+    return result;
 }
 
 // "0.83": locus' time over surf's, or "-" when surf's is missing.
@@ -237,25 +276,26 @@ int run_render_bench(const RenderBenchArgs& args) {
         const render::ClipRegion region = scene.surfaces[0].clip;
         const render::PrimaryRays reference = render::trace_primary_rays(
             f, region, camera, args.size, args.size, render::TraceMethod::exact, 0);
-        const RunTimes surf_times = with_surf ? time_surf(args.surf, s, args.size) : RunTimes{};
-        const double surf_seconds = surf_times.median;
         // The whole picture as `locus render` makes it (default method, Blinn–Phong, no
         // shadows, one sample, all cores): the figure to set beside surf's.
         scene.options.shadows = false;
         const std::vector<algebra::CompiledPolynomial> compiled = {f};
-        std::vector<double> frames;
-        double render_total = 0.0;
-        do {
+        auto frame = [&] {
             render::RenderStats stats;
             render::ExecutionSettings execution;
             execution.aovs = false;  // as `locus render` without --aov
             render::render(scene, compiled, execution, &stats);
-            frames.push_back(stats.seconds);
-            render_total += stats.seconds;
-        } while (frames.size() < 5 || (render_total < args.min_seconds && frames.size() < 50));
-        const RunTimes render_times = summary_of(std::move(frames));
-        const double render_seconds = render_times.median;
-        const double render_best = render_times.best;
+            return stats.seconds;
+        };
+        std::optional<SurfRun> surf;
+        if (with_surf) {
+            surf.emplace(args.surf, s, args.size);
+        }
+        const Comparison timing =
+            time_side_by_side(frame, surf ? &*surf : nullptr, args.min_seconds);
+        const double surf_seconds = timing.surf.median;
+        const double render_seconds = timing.locus.median;
+        const double render_best = timing.locus.best;
         const double tolerance = 1e-6 * s.clip_radius;
         const std::vector<double> reference_shade = shade_image(f, camera, reference, args.size);
         for (const Setting& setting : settings_of(methods)) {
@@ -310,7 +350,7 @@ int run_render_bench(const RenderBenchArgs& args) {
                           << "," << seconds << "," << rays / seconds << "," << work / rays << ","
                           << wrong << "," << wrong / rays << "," << unknown << "," << max_error
                           << "," << mean_error << "," << image_rms << "," << render_seconds << ","
-                          << surf_seconds << "," << render_best << "," << surf_times.best << "\n";
+                          << surf_seconds << "," << render_best << "," << timing.surf.best << "\n";
             } else {
                 std::string label(render::to_string(method));
                 if (setting.name != "default") {
@@ -325,7 +365,7 @@ int run_render_bench(const RenderBenchArgs& args) {
                     100.0 * wrong / rays, max_error, mean_error, image_rms, render_seconds,
                     surf_seconds > 0 ? std::to_string(surf_seconds).substr(0, 6).c_str() : "-",
                     ratio_text(render_seconds, surf_seconds).c_str(),
-                    ratio_text(render_best, surf_times.best).c_str());
+                    ratio_text(render_best, timing.surf.best).c_str());
             }
             std::cout.flush();
         }
