@@ -52,11 +52,15 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
         return std::tie(p.ex, p.ey, p.ez) < std::tie(q.ex, q.ey, q.ez);
     });
     for (std::size_t i = 0; i < terms_.size(); ++i) {
-        if (groups_.empty() || groups_.back().ex != terms_[i].ex ||
-            groups_.back().ey != terms_[i].ey) {
-            groups_.push_back({terms_[i].ex, terms_[i].ey, i, i});
+        const CompiledTerm& t = terms_[i];
+        if (groups_.empty() || groups_.back().ex != t.ex || groups_.back().ey != t.ey) {
+            groups_.push_back(
+                {t.ex, t.ey, static_cast<double>(t.ex), static_cast<double>(t.ey), i, i});
         }
         groups_.back().end = i + 1;
+        coefficients_.push_back(t.coefficient);
+        z_slopes_.push_back(t.coefficient * t.ez);
+        z_exponents_.push_back(t.ez);
     }
 }
 
@@ -68,25 +72,27 @@ namespace {
 // powers[k + 1] = v^k for k ≤ degree, powers[0] = 0 (so that k·v^(k−1) reads powers[k] = 0·…
 // safely for k = 0).
 using PowerRow = std::array<double, kMaxCompiledDegree + 2>;
-void fill_powers(PowerRow& powers, double v, int degree) {
-    powers[0] = 0.0;
-    powers[1] = 1.0;
+// The three coordinates' powers in one loop: three independent chains of multiplications
+// overlap, where three loops one after the other waited for each chain in turn.
+void fill_powers(PowerRow& xs, PowerRow& ys, PowerRow& zs, const Point3& p, int degree) {
+    xs[0] = ys[0] = zs[0] = 0.0;
+    xs[1] = ys[1] = zs[1] = 1.0;
     for (int k = 1; k <= degree; ++k) {
-        powers[k + 1] = powers[k] * v;
+        xs[k + 1] = xs[k] * p[0];
+        ys[k + 1] = ys[k] * p[1];
+        zs[k + 1] = zs[k] * p[2];
     }
 }
 }  // namespace
 
 double CompiledPolynomial::value(const Point3& p) const {
     PowerRow xs, ys, zs;
-    fill_powers(xs, p[0], degree_);
-    fill_powers(ys, p[1], degree_);
-    fill_powers(zs, p[2], degree_);
+    fill_powers(xs, ys, zs, p, degree_);
     double sum = 0.0;
     for (const Group& g : groups_) {
         double in_z = 0.0;
         for (std::size_t i = g.begin; i < g.end; ++i) {
-            in_z += terms_[i].coefficient * zs[terms_[i].ez + 1];
+            in_z += coefficients_[i] * zs[z_exponents_[i] + 1];
         }
         sum += xs[g.ex + 1] * ys[g.ey + 1] * in_z;
     }
@@ -95,24 +101,53 @@ double CompiledPolynomial::value(const Point3& p) const {
 
 ValueGradient CompiledPolynomial::value_gradient(const Point3& p) const {
     PowerRow xs, ys, zs;
-    fill_powers(xs, p[0], degree_);
-    fill_powers(ys, p[1], degree_);
-    fill_powers(zs, p[2], degree_);
+    fill_powers(xs, ys, zs, p, degree_);
     ValueGradient result{0.0, {0.0, 0.0, 0.0}};
     for (const Group& g : groups_) {
         double in_z = 0.0, in_z_derivative = 0.0;
         for (std::size_t i = g.begin; i < g.end; ++i) {
-            const CompiledTerm& t = terms_[i];
-            in_z += t.coefficient * zs[t.ez + 1];
-            in_z_derivative += t.coefficient * t.ez * zs[t.ez];
+            in_z += coefficients_[i] * zs[z_exponents_[i] + 1];
+            in_z_derivative += z_slopes_[i] * zs[z_exponents_[i]];
         }
         const double x = xs[g.ex + 1], y = ys[g.ey + 1];
         result.value += x * y * in_z;
-        result.gradient[0] += g.ex * xs[g.ex] * y * in_z;
-        result.gradient[1] += g.ey * x * ys[g.ey] * in_z;
+        result.gradient[0] += g.x_exponent * xs[g.ex] * y * in_z;
+        result.gradient[1] += g.y_exponent * x * ys[g.ey] * in_z;
         result.gradient[2] += x * y * in_z_derivative;
     }
     return result;
+}
+
+Point3 CompiledPolynomial::gradient(const Point3& p) const {
+    PowerRow xs, ys, zs;
+    fill_powers(xs, ys, zs, p, degree_);
+    // Even and odd groups add into separate sums: with one running sum per component every
+    // group waits for the previous one's additions. The data pointers are locals so that the
+    // sums, kept in registers, are seen not to alias them.
+    const double* coefficients = coefficients_.data();
+    const double* slopes = z_slopes_.data();
+    const int* z = z_exponents_.data();
+    double even_x = 0.0, even_y = 0.0, even_z = 0.0, odd_x = 0.0, odd_y = 0.0, odd_z = 0.0;
+    auto add_group = [&](const Group& g, double& sum_x, double& sum_y, double& sum_z) {
+        double in_z = 0.0, in_z_derivative = 0.0;
+        for (std::size_t i = g.begin; i < g.end; ++i) {
+            in_z += coefficients[i] * zs[z[i] + 1];
+            in_z_derivative += slopes[i] * zs[z[i]];
+        }
+        const double x = xs[g.ex + 1], y = ys[g.ey + 1];
+        sum_x += g.x_exponent * xs[g.ex] * y * in_z;
+        sum_y += g.y_exponent * x * ys[g.ey] * in_z;
+        sum_z += x * y * in_z_derivative;
+    };
+    std::size_t k = 0;
+    for (; k + 1 < groups_.size(); k += 2) {
+        add_group(groups_[k], even_x, even_y, even_z);
+        add_group(groups_[k + 1], odd_x, odd_y, odd_z);
+    }
+    if (k < groups_.size()) {
+        add_group(groups_[k], even_x, even_y, even_z);
+    }
+    return {even_x + odd_x, even_y + odd_y, even_z + odd_z};
 }
 
 CompiledPolynomial compile_surface(std::string_view equation) {

@@ -135,8 +135,7 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
     const ShadedSurface& surface = surfaces_[index];
     const Vec3 point = ray.at(t);
     const Vec3 view = -glm::normalize(ray.direction);
-    const algebra::ValueGradient vg = surface.tracer->polynomial().value_gradient(to_point(point));
-    Vec3 normal = to_vec(vg.gradient);
+    Vec3 normal = to_vec(surface.tracer->polynomial().gradient(to_point(point)));
     const double length = glm::length(normal);
     bool outside = true;
     if (length > 0.0 && std::isfinite(length)) {
