@@ -28,6 +28,16 @@ MonomialLayout::MonomialLayout(const MonomialOrder& order) : order_(order) {
             }
         }
     }
+    mask_table_.assign(words_, {});
+    for (std::size_t i = 0; i < order_.num_vars(); ++i) {
+        const std::size_t f = field_of_variable_[i];
+        const unsigned slot = shift(f) / field_bits;
+        for (unsigned pattern = 0; pattern < 16; ++pattern) {
+            if ((pattern >> slot & 1u) != 0) {
+                mask_table_[f / fields_per_word][pattern] |= std::uint64_t{1} << (i % 64);
+            }
+        }
+    }
 }
 
 void MonomialLayout::throw_overflow() {
@@ -148,10 +158,14 @@ bool MonomialLayout::coprime(const std::uint64_t* a, const std::uint64_t* b) con
 
 std::uint64_t MonomialLayout::divisibility_mask(const std::uint64_t* m) const {
     std::uint64_t mask = 0;
-    for (std::size_t i = 0; i < num_vars(); ++i) {
-        if (field(m, field_of_variable_[i]) != 0) {
-            mask |= std::uint64_t{1} << (i % 64);
-        }
+    for (std::size_t w = 0; w < words_; ++w) {
+        // A variable field x ≤ 32767 plus 32767 carries into its guard bit exactly when x ≠ 0,
+        // and stays within its 16 bits; other fields add 0 to 0.
+        const std::uint64_t nonzero =
+            ((m[w] & variable_mask_[w]) + variable_mask_[w]) & guard_mask_;
+        const std::uint64_t pattern = ((nonzero >> 15) & 1u) | ((nonzero >> 30) & 2u) |
+                                      ((nonzero >> 45) & 4u) | ((nonzero >> 60) & 8u);
+        mask |= mask_table_[w][pattern];
     }
     return mask;
 }

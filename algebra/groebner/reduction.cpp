@@ -4,25 +4,39 @@
 
 namespace locus::algebra::detail {
 
-long Reducer::find_reducer(const std::uint64_t* m, const std::vector<BasisElement>& basis) const {
+void Reducer::gather_candidates(const std::vector<BasisElement>& basis) {
+    const std::size_t w = layout_.words();
+    candidate_masks_.clear();
+    candidate_monomials_.clear();
+    candidate_bits_.clear();
+    candidate_indices_.clear();
+    for (std::size_t k = 0; k < basis.size(); ++k) {
+        const BasisElement& e = basis[k];
+        if (e.redundant) {
+            continue;
+        }
+        candidate_masks_.push_back(e.poly.leading_mask);
+        candidate_monomials_.insert(candidate_monomials_.end(), e.poly.monomial(0, w),
+                                    e.poly.monomial(0, w) + w);
+        candidate_bits_.push_back(fmpz_bits(e.poly.coefficients[0].get()));
+        candidate_indices_.push_back(k);
+    }
+}
+
+long Reducer::find_reducer(const std::uint64_t* m) const {
     const std::uint64_t mask = layout_.divisibility_mask(m);
     const std::size_t w = layout_.words();
     long best = -1;
-    for (std::size_t k = 0; k < basis.size(); ++k) {
-        const BasisElement& e = basis[k];
-        if (e.redundant || (e.poly.leading_mask & ~mask) != 0) {
+    for (std::size_t k = 0; k < candidate_masks_.size(); ++k) {
+        if ((candidate_masks_[k] & ~mask) != 0 ||
+            !layout_.divides(candidate_monomials_.data() + k * w, m)) {
             continue;
         }
-        if (!layout_.divides(e.poly.monomial(0, w), m)) {
-            continue;
-        }
-        if (best < 0 ||
-            fmpz_bits(e.poly.coefficients[0].get()) <
-                fmpz_bits(basis[static_cast<std::size_t>(best)].poly.coefficients[0].get())) {
+        if (best < 0 || candidate_bits_[k] < candidate_bits_[static_cast<std::size_t>(best)]) {
             best = static_cast<long>(k);
         }
     }
-    return best;
+    return best < 0 ? -1 : static_cast<long>(candidate_indices_[static_cast<std::size_t>(best)]);
 }
 
 void Reducer::combine(IntegerPolynomial& p, std::size_t from, const Integer& a, const Integer& b,
@@ -95,6 +109,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
     lm.resize(w);
     m.resize(w);
     Integer lc, g, a, b;
+    gather_candidates(basis);
     while (bucket.pop_leading(lm.data(), lc)) {
         // Fraction-free steps multiply everything by a each time, but much of that growth is a
         // common factor: divide it out whenever the coefficients have doubled in size since
@@ -123,7 +138,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
                                                            fmpz_bits(result.coefficients[0].get()));
             }
         }
-        const long k = find_reducer(lm.data(), basis);
+        const long k = find_reducer(lm.data());
         if (k < 0) {
             result.coefficients.emplace_back(std::move(lc));
             result.monomials.insert(result.monomials.end(), lm.begin(), lm.end());

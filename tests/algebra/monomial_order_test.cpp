@@ -97,6 +97,12 @@ TEST_P(MonomialOrderTest, TotalMultiplicativeAndOneSmallest) {
         }
         EXPECT_EQ(layout.coprime(pa.data(), pb.data()), coprime);
         EXPECT_EQ(layout.divides(pa.data(), pb.data()), a_divides_b);
+        // The divisibility mask has bit i mod 64 exactly for the variables that occur.
+        std::uint64_t occurring = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            occurring |= a[i] != 0 ? std::uint64_t{1} << (i % 64) : 0;
+        }
+        EXPECT_EQ(layout.divisibility_mask(pa.data()), occurring);
         // The packed lcm must equal packing the exponent-wise max (linear fields recomputed).
         std::vector<std::uint64_t> repacked(w);
         layout.pack(back, repacked.data());
