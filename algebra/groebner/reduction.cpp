@@ -6,19 +6,23 @@ namespace locus::algebra::detail {
 
 void Reducer::gather_candidates(const std::vector<BasisElement>& basis) {
     const std::size_t w = layout_.words();
+    // In the order of preference, smallest leading coefficient first and oldest among equals,
+    // so that the first divisor found is the one to use.
+    order_.clear();
+    for (std::size_t k = 0; k < basis.size(); ++k) {
+        if (!basis[k].redundant) {
+            order_.push_back({fmpz_bits(basis[k].poly.coefficients[0].get()), k});
+        }
+    }
+    std::sort(order_.begin(), order_.end());
     candidate_masks_.clear();
     candidate_monomials_.clear();
-    candidate_bits_.clear();
     candidate_indices_.clear();
-    for (std::size_t k = 0; k < basis.size(); ++k) {
-        const BasisElement& e = basis[k];
-        if (e.redundant) {
-            continue;
-        }
-        candidate_masks_.push_back(e.poly.leading_mask);
-        candidate_monomials_.insert(candidate_monomials_.end(), e.poly.monomial(0, w),
-                                    e.poly.monomial(0, w) + w);
-        candidate_bits_.push_back(fmpz_bits(e.poly.coefficients[0].get()));
+    for (const auto& [bits, k] : order_) {
+        const IntegerPolynomial& g = basis[k].poly;
+        candidate_masks_.push_back(g.leading_mask);
+        candidate_monomials_.insert(candidate_monomials_.end(), g.monomial(0, w),
+                                    g.monomial(0, w) + w);
         candidate_indices_.push_back(k);
     }
 }
@@ -26,17 +30,13 @@ void Reducer::gather_candidates(const std::vector<BasisElement>& basis) {
 long Reducer::find_reducer(const std::uint64_t* m) const {
     const std::uint64_t mask = layout_.divisibility_mask(m);
     const std::size_t w = layout_.words();
-    long best = -1;
     for (std::size_t k = 0; k < candidate_masks_.size(); ++k) {
-        if ((candidate_masks_[k] & ~mask) != 0 ||
-            !layout_.divides(candidate_monomials_.data() + k * w, m)) {
-            continue;
-        }
-        if (best < 0 || candidate_bits_[k] < candidate_bits_[static_cast<std::size_t>(best)]) {
-            best = static_cast<long>(k);
+        if ((candidate_masks_[k] & ~mask) == 0 &&
+            layout_.divides(candidate_monomials_.data() + k * w, m)) {
+            return static_cast<long>(candidate_indices_[k]);
         }
     }
-    return best < 0 ? -1 : static_cast<long>(candidate_indices_[static_cast<std::size_t>(best)]);
+    return -1;
 }
 
 void Reducer::combine(IntegerPolynomial& p, std::size_t from, const Integer& a, const Integer& b,
