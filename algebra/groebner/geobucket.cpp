@@ -72,9 +72,8 @@ void GeoBucket::merge(Bucket& target, Bucket& source) {
     Bucket& out = scratch_;
     out.clear();
     // Monomials are written by index: an insert per term was a call to memmove for 1–2 words.
-    out.monomials.resize((target.size() + source.size()) * w);
     out.coefficients.reserve(target.size() + source.size());
-    std::uint64_t* written = out.monomials.data();
+    std::uint64_t* written = out.monomial_storage((target.size() + source.size()) * w);
     std::size_t i = target.head, j = source.head;
     const std::size_t i_end = target.coefficients.size(), j_end = source.coefficients.size();
     auto take = [&](Bucket& from, std::size_t& k) {
@@ -107,7 +106,6 @@ void GeoBucket::merge(Bucket& target, Bucket& source) {
     while (j < j_end) {
         take(source, j);
     }
-    out.monomials.resize(out.coefficients.size() * w);
     std::swap(target, out);
     source.clear();
 }
@@ -126,9 +124,8 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
     Bucket& target = buckets_[level];
     Bucket& out = scratch_;
     out.clear();
-    out.monomials.resize((target.size() + length) * w);
     out.coefficients.reserve(target.size() + length);
-    std::uint64_t* written = out.monomials.data();
+    std::uint64_t* written = out.monomial_storage((target.size() + length) * w);
     product_.resize(w);
     fmpz_neg(negated_.get(), b.get());
     std::size_t i = target.head, j = from;
@@ -169,7 +166,6 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
             layout_.multiply(g.monomial(j, w), m, product_.data());
         }
     }
-    out.monomials.resize(out.coefficients.size() * w);
     std::swap(target, out);
     carry(level);
 }
