@@ -4,10 +4,8 @@
 
 namespace locus::algebra::detail {
 
-void Reducer::gather_candidates(const std::vector<BasisElement>& basis) {
-    const std::size_t w = layout_.words();
-    // In the order of preference, smallest leading coefficient first and oldest among equals,
-    // so that the first divisor found is the one to use.
+void ReducerSearch::gather(const std::vector<BasisElement>& basis, const MonomialLayout& layout) {
+    const std::size_t w = layout.words();
     order_.clear();
     for (std::size_t k = 0; k < basis.size(); ++k) {
         if (!basis[k].redundant) {
@@ -15,28 +13,15 @@ void Reducer::gather_candidates(const std::vector<BasisElement>& basis) {
         }
     }
     std::sort(order_.begin(), order_.end());
-    candidate_masks_.clear();
-    candidate_monomials_.clear();
-    candidate_indices_.clear();
+    masks_.clear();
+    monomials_.clear();
+    indices_.clear();
     for (const auto& [bits, k] : order_) {
         const IntegerPolynomial& g = basis[k].poly;
-        candidate_masks_.push_back(g.leading_mask);
-        candidate_monomials_.insert(candidate_monomials_.end(), g.monomial(0, w),
-                                    g.monomial(0, w) + w);
-        candidate_indices_.push_back(k);
+        masks_.push_back(g.leading_mask);
+        monomials_.insert(monomials_.end(), g.monomial(0, w), g.monomial(0, w) + w);
+        indices_.push_back(k);
     }
-}
-
-long Reducer::find_reducer(const std::uint64_t* m) const {
-    const std::uint64_t mask = layout_.divisibility_mask(m);
-    const std::size_t w = layout_.words();
-    for (std::size_t k = 0; k < candidate_masks_.size(); ++k) {
-        if ((candidate_masks_[k] & ~mask) == 0 &&
-            layout_.divides(candidate_monomials_.data() + k * w, m)) {
-            return static_cast<long>(candidate_indices_[k]);
-        }
-    }
-    return -1;
 }
 
 void Reducer::combine(IntegerPolynomial& p, std::size_t from, const Integer& a, const Integer& b,
@@ -109,7 +94,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
     lm.resize(w);
     m.resize(w);
     Integer lc, g, a, b;
-    gather_candidates(basis);
+    search_.gather(basis, layout_);
     while (bucket.pop_leading(lm.data(), lc)) {
         // Fraction-free steps multiply everything by a each time, but much of that growth is a
         // common factor: divide it out whenever the coefficients have doubled in size since
@@ -138,7 +123,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
                                                            fmpz_bits(result.coefficients[0].get()));
             }
         }
-        const long k = find_reducer(lm.data());
+        const long k = search_.find(lm.data(), layout_);
         if (k < 0) {
             result.coefficients.emplace_back(std::move(lc));
             result.monomials.insert(result.monomials.end(), lm.begin(), lm.end());

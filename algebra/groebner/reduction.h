@@ -31,6 +31,35 @@ struct ReductionCounts {
 // per S-pair.
 struct ReductionInterrupted {};
 
+// Which basis element reduces a term: among the non-redundant elements whose leading monomial
+// divides it, the one with the smallest leading coefficient (ties: the oldest). Reducer and
+// ZeroReducer (zero_reducer.h) choose the same way.
+class ReducerSearch {
+  public:
+    // Reads `basis`'s non-redundant elements; call again when the basis changes.
+    void gather(const std::vector<BasisElement>& basis, const MonomialLayout& layout);
+    // Index in the gathered basis of the element that reduces m, or -1.
+    long find(const std::uint64_t* m, const MonomialLayout& layout) const {
+        const std::uint64_t mask = layout.divisibility_mask(m);
+        const std::size_t w = layout.words();
+        for (std::size_t k = 0; k < masks_.size(); ++k) {
+            if ((masks_[k] & ~mask) == 0 && layout.divides(monomials_.data() + k * w, m)) {
+                return static_cast<long>(indices_[k]);
+            }
+        }
+        return -1;
+    }
+
+  private:
+    // The candidates' leading masks, monomials and indices, contiguous and in the order of
+    // preference, so that the first divisor found is the one to use: every popped term
+    // searches them, and walking the basis itself (a pointer to each element's monomials, a
+    // size computed per divisor, no early exit) was 13 % of eco-7's instructions.
+    std::vector<std::uint64_t> masks_, monomials_;
+    std::vector<std::size_t> indices_;
+    std::vector<std::pair<std::size_t, std::size_t>> order_;  // (leading-coefficient bits, index)
+};
+
 class Reducer {
   public:
     explicit Reducer(const MonomialLayout& layout) : layout_(layout), bucket_(layout) {}
@@ -48,15 +77,6 @@ class Reducer {
                                    const std::uint64_t* lcm, std::uint32_t sugar);
 
   private:
-    // Index in `basis` of the non-redundant element with the smallest leading coefficient (ties:
-    // the oldest) whose leading monomial divides m, or -1. Reads the candidates gathered by
-    // gather_candidates for this basis.
-    long find_reducer(const std::uint64_t* m) const;
-    // The non-redundant elements' leading masks, monomials and indices, contiguous and in the
-    // order of preference: every popped term searches them, and walking the basis itself (a
-    // pointer to each element's monomials, a size computed per divisor, no early exit) was
-    // 13 % of eco-7's instructions.
-    void gather_candidates(const std::vector<BasisElement>& basis);
     // out = a·p[from..] − b·m·g[1..] (g's leading term cancels against p's, skipped by caller).
     void combine(IntegerPolynomial& p, std::size_t from, const Integer& a, const Integer& b,
                  const std::uint64_t* m, const IntegerPolynomial& g);
@@ -68,9 +88,7 @@ class Reducer {
     // reduce's working polynomial and monomials, kept to reuse their storage.
     GeoBucket bucket_;
     std::vector<std::uint64_t> leading_, multiplier_;
-    std::vector<std::uint64_t> candidate_masks_, candidate_monomials_;
-    std::vector<std::size_t> candidate_indices_;
-    std::vector<std::pair<std::size_t, std::size_t>> order_;  // (leading-coefficient bits, index)
+    ReducerSearch search_;
 };
 
 // Reduced-basis step (reduced_basis.cpp): drops elements whose leading monomial is divisible by

@@ -1,6 +1,7 @@
 #include "algebra/groebner/verify.h"
 
 #include <atomic>
+#include <memory>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -11,6 +12,7 @@
 #include "algebra/error.h"
 #include "algebra/groebner/pair_criteria.h"
 #include "algebra/groebner/reduction.h"
+#include "algebra/groebner/zero_reducer.h"
 #include "algebra/print.h"
 
 namespace locus::algebra {
@@ -94,29 +96,22 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         elements.push_back({detail::to_integer_polynomial(g), false});
         detail::gebauer_moller_update(elements, pairs, elements.size() - 1, layout, counts);
     }
-    detail::Reducer reducer(layout);
+    detail::ZeroReducer reducer(layout, elements);
     reducer.set_deadline(deadline);
     detail::ReductionCounts steps;
     try {
         for (std::size_t i = 0; i < generators.size(); ++i) {
             ++check.generators_checked;
-            if (generators[i].is_zero()) {
-                continue;
-            }
-            if (!reducer
-                     .reduce(detail::to_integer_polynomial(generators[i]), elements, steps, false)
-                     .empty()) {
+            if (!reducer.reduces_to_zero(detail::to_integer_polynomial(generators[i]), steps)) {
                 check.ok = false;
                 check.failure = "generator " + std::to_string(i + 1) + " does not reduce to zero";
                 return check;
             }
         }
-        // Whether the S-polynomial of `pair` reduces to zero, with the given reducer.
-        auto pair_reduces = [&](detail::Reducer& r, const detail::CriticalPair& pair,
+        auto pair_reduces = [&](detail::ZeroReducer& r, const detail::CriticalPair& pair,
                                 detail::ReductionCounts& pair_steps) {
-            const detail::IntegerPolynomial s = r.s_polynomial(
-                elements[pair.first].poly, elements[pair.second].poly, pair.lcm.data(), pair.sugar);
-            return r.reduce(s, elements, pair_steps, false).empty();
+            return r.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(),
+                                                  pair_steps);
         };
         std::size_t failed = pairs.size();  // the first pair, in order, that does not reduce
         if (threads <= 1 || pairs.size() < 2) {
@@ -127,9 +122,10 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             }
         } else {
             std::atomic<std::size_t> first_failure{pairs.size()};
-            tbb::enumerable_thread_specific<detail::Reducer> reducers([&] {
-                detail::Reducer r(layout);
-                r.set_deadline(deadline);
+            // Each thread numbers its own columns and finds its own reducer rows.
+            tbb::enumerable_thread_specific<std::unique_ptr<detail::ZeroReducer>> reducers([&] {
+                auto r = std::make_unique<detail::ZeroReducer>(layout, elements);
+                r->set_deadline(deadline);
                 return r;
             });
             tbb::task_arena arena(threads);
@@ -137,7 +133,7 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                 tbb::parallel_for(
                     tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
                     [&](const tbb::blocked_range<std::size_t>& range) {
-                        detail::Reducer& local = reducers.local();
+                        detail::ZeroReducer& local = *reducers.local();
                         detail::ReductionCounts local_steps;
                         for (std::size_t k = range.begin(); k < range.end(); ++k) {
                             // Pairs after a known failure need no check.

@@ -1,10 +1,10 @@
 #include "algebra/modular/f4.h"
 
 #include <algorithm>
-#include <cstring>
 #include <numeric>
 
 #include "algebra/error.h"
+#include "algebra/monomial_table.h"
 
 namespace locus::algebra::modular {
 
@@ -15,59 +15,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-// Monomials stored once each, found by hashing their packed words (open addressing).
-class MonomialTable {
-  public:
-    explicit MonomialTable(std::size_t words) : words_(words), slots_(1024, kEmpty) {}
-
-    std::size_t size() const { return count_; }
-    const std::uint64_t* at(std::uint32_t index) const { return data_.data() + index * words_; }
-
-    std::uint32_t insert(const std::uint64_t* m) {
-        if (2 * (count_ + 1) > slots_.size()) {
-            grow();
-        }
-        std::size_t slot = hash(m) & (slots_.size() - 1);
-        while (slots_[slot] != kEmpty) {
-            if (std::memcmp(at(slots_[slot]), m, words_ * sizeof(std::uint64_t)) == 0) {
-                return slots_[slot];
-            }
-            slot = (slot + 1) & (slots_.size() - 1);
-        }
-        const auto index = static_cast<std::uint32_t>(count_++);
-        data_.insert(data_.end(), m, m + words_);
-        slots_[slot] = index;
-        return index;
-    }
-
-  private:
-    static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
-    std::uint64_t hash(const std::uint64_t* m) const {
-        std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-        for (std::size_t w = 0; w < words_; ++w) {
-            h = (h ^ m[w]) * 0xff51afd7ed558ccdULL;
-            h ^= h >> 32;
-        }
-        return h;
-    }
-    void grow() {
-        std::vector<std::uint32_t> old(2 * slots_.size(), kEmpty);
-        old.swap(slots_);
-        for (std::uint32_t index = 0; index < count_; ++index) {
-            std::size_t slot = hash(at(index)) & (slots_.size() - 1);
-            while (slots_[slot] != kEmpty) {
-                slot = (slot + 1) & (slots_.size() - 1);
-            }
-            slots_[slot] = index;
-        }
-    }
-
-    std::size_t words_;
-    std::vector<std::uint64_t> data_;
-    std::vector<std::uint32_t> slots_;
-    std::size_t count_ = 0;
-};
 
 struct Element {
     ModularPolynomial poly;  // monic
