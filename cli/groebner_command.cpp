@@ -47,6 +47,20 @@ void print_modular_stats(const algebra::ModularStats& s) {
                  s.certified ? "certified over Q: the input reduces to zero and every S-pair "
                                "left by the criteria reduces to zero"
                              : "NOT certified (--no-certify): the basis is probabilistic");
+    if (s.certified) {
+        std::fprintf(stderr, "certification: %zu reduction steps", s.certify_steps);
+        if (s.certify_lanes > 0) {
+            std::fprintf(stderr,
+                         " on residues modulo %zu primes (%s kernels; %zu reductions begun again "
+                         "on more, %zu rebuilds in full)",
+                         s.certify_lanes, algebra::certification_kernels(), s.certify_restarts,
+                         s.certify_rebuilds);
+        }
+        std::fprintf(stderr, "%s\n",
+                     s.certify_exact
+                         ? (s.certify_lanes > 0 ? ", then on GMP integers" : " on GMP integers")
+                         : "");
+    }
 }
 
 void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring) {

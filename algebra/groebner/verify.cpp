@@ -12,6 +12,7 @@
 #include "algebra/error.h"
 #include "algebra/groebner/pair_criteria.h"
 #include "algebra/groebner/reduction.h"
+#include "algebra/groebner/residue_lanes.h"
 #include "algebra/groebner/zero_reducer.h"
 #include "algebra/print.h"
 
@@ -108,6 +109,13 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                 return check;
             }
         }
+        const auto add_statistics = [&](const detail::ZeroReducer& r) {
+            const detail::ZeroReducer::Statistics st = r.statistics();
+            check.lanes = std::max(check.lanes, st.lanes);
+            check.lane_restarts += st.restarts;
+            check.rebuilds += st.rebuilds;
+            check.exact_fallback = check.exact_fallback || st.exact;
+        };
         auto pair_reduces = [&](detail::ZeroReducer& r, const detail::CriticalPair& pair,
                                 detail::ReductionCounts& pair_steps) {
             return r.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(),
@@ -128,13 +136,14 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                 r->set_deadline(deadline);
                 return r;
             });
+            tbb::enumerable_thread_specific<detail::ReductionCounts> thread_steps;
             tbb::task_arena arena(threads);
             arena.execute([&] {
                 tbb::parallel_for(
                     tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                         detail::ZeroReducer& local = *reducers.local();
-                        detail::ReductionCounts local_steps;
+                        detail::ReductionCounts& local_steps = thread_steps.local();
                         for (std::size_t k = range.begin(); k < range.end(); ++k) {
                             // Pairs after a known failure need no check.
                             if (k > first_failure.load(std::memory_order_relaxed)) {
@@ -149,7 +158,16 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                     });
             });
             failed = first_failure.load();
+            for (const std::unique_ptr<detail::ZeroReducer>& r : reducers) {
+                add_statistics(*r);
+            }
+            // Each thread counted its own steps: gathered here, after the threads are done.
+            for (const detail::ReductionCounts& c : thread_steps) {
+                steps.steps += c.steps;
+            }
         }
+        add_statistics(reducer);
+        check.reduction_steps = steps.steps;
         check.pairs_checked = failed < pairs.size() ? failed + 1 : pairs.size();
         if (failed < pairs.size()) {
             check.ok = false;
@@ -161,6 +179,10 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         throw Timeout("certification of the modular result");
     }
     return check;
+}
+
+const char* certification_kernels() {
+    return detail::lanes::kernel_name();
 }
 
 bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polynomial> generators) {

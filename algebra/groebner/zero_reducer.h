@@ -1,31 +1,23 @@
 // Internal to the Gröbner code: decides whether integer polynomials reduce to zero by a basis
 // that does not change, for the certification of multi-modular results (verify.h).
 //
-// The steps are Reducer's (reduction.h): fraction-free, a·p − b·m·g, the same reducer for each
-// term (ReducerSearch), the content divided out when the coefficients have doubled; only the
-// leading terms are reduced, so the first term no element reduces ends the work (not zero).
-// What differs is the bookkeeping, because the basis is fixed:
-// - every monomial met gets a column number (MonomialTable), once per certification;
-// - a column's reducer and the columns of the multiple m·g that cancels it are found once and
-//   kept (F4's symbolic preprocessing, done lazily): katsura-10's certification takes 2.6
-//   million steps on a few hundred thousand distinct columns;
-// - the polynomial being reduced is an array of GMP integers indexed by column, which keep
-//   their limbs when they cancel to zero, with a heap of its columns in descending order.
-// Why: on katsura-9's certification a step's reducer has about 80 terms of about 80 bits and
-// the multiplier about 260 bits, so the arithmetic is cheap; Reducer's geobucket spent more on
-// merging buckets, multiplying and comparing monomials and allocating a GMP integer for every
-// new term, which cancels again a few steps later (58 ns a term in all).
+// Both reducers behind it make the same fraction-free steps on the same integers (the steps of
+// Reducer, reduction.h); they differ in how they hold the integers. ResidueZeroReducer holds
+// them as residues modulo word primes with rigorous size bounds, a vector multiply-add per
+// term; ExactZeroReducer as GMP integers. The residues are used unless the integers need more
+// than ResidueZeroReducer::kMostLanes primes (coefficients of thousands of digits, where
+// setting up the lanes costs more than the few steps such bases take); a reduction that
+// outgrows them moves this reducer to GMP integers for good.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
-#include <gmp.h>
-
-#include "algebra/groebner/reduction.h"
-#include "algebra/monomial_table.h"
+#include "algebra/groebner/exact_zero_reducer.h"
+#include "algebra/groebner/residue_zero_reducer.h"
 
 namespace locus::algebra::detail {
 
@@ -38,9 +30,7 @@ class ZeroReducer {
     ZeroReducer& operator=(const ZeroReducer&) = delete;
 
     // Throws ReductionInterrupted once the deadline has passed (checked every 16 steps).
-    void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
-        deadline_ = deadline;
-    }
+    void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
 
     // Whether p reduces to zero.
     bool reduces_to_zero(const IntegerPolynomial& p, ReductionCounts& counts);
@@ -49,46 +39,23 @@ class ZeroReducer {
     bool s_polynomial_reduces_to_zero(std::size_t i, std::size_t j, const std::uint64_t* lcm,
                                       ReductionCounts& counts);
 
-    // Columns numbered so far: a measure of the memory held.
-    std::size_t columns() const { return table_.size(); }
+    struct Statistics {
+        std::size_t lanes = 0;     // residues per integer at the end, 0 on GMP integers only
+        std::size_t restarts = 0;  // reductions begun again on more lanes
+        std::size_t rebuilds = 0;  // pending values rebuilt in full from their residues
+        bool exact = false;        // some reductions ran on GMP integers
+    };
+    Statistics statistics() const;
 
   private:
-    // A reducer row: the basis element and, for its terms after the leading one, the columns
-    // of their products with the multiplier (in row_columns_ from `offset`).
-    struct Row {
-        std::size_t element;
-        std::size_t offset;
-    };
-    static constexpr std::int32_t kNotLookedUp = -2, kIrreducible = -1;
-
-    std::uint32_t column(const std::uint64_t* m);
-    // Index in rows_ of the row that reduces `column`, or kIrreducible; found on first use.
-    std::int32_t row_of(std::uint32_t column);
-    // acc[column(m·t)] += factor·c for every term c·t of `p` from `from` on.
-    void add_multiple(const mpz_t factor, const std::uint64_t* m, const IntegerPolynomial& p,
-                      std::size_t from);
-    void push(std::uint32_t column);
-    // Reduces what add_multiple loaded; leaves every column zero and the heap empty.
-    bool reduce_loaded(ReductionCounts& counts);
-    // Zero every column still in the heap and empty it (after a failure or an interruption).
-    void clear_pending();
+    ExactZeroReducer& exact();
 
     const MonomialLayout& layout_;
     const std::vector<BasisElement>& basis_;
-    ReducerSearch search_;
     std::optional<std::chrono::steady_clock::time_point> deadline_;
-    std::vector<__mpz_struct> leading_coefficients_;  // of the basis elements
-
-    MonomialTable table_;
-    std::vector<__mpz_struct> values_;   // by column; zero outside a reduction
-    std::vector<std::uint8_t> pending_;  // the column is in heap_
-    std::vector<std::int32_t> row_of_column_;
-    std::vector<Row> rows_;
-    std::vector<std::uint32_t> row_columns_;
-    std::vector<std::uint32_t> heap_;  // columns, largest monomial on top
-
-    mpz_t gcd_, a_, b_, content_;
-    std::vector<std::uint64_t> product_, multiplier_;
+    std::unique_ptr<ResidueZeroReducer> residue_;        // null once the lanes ran out
+    std::unique_ptr<ExactZeroReducer> exact_;            // made when first needed
+    ResidueZeroReducer::Statistics residue_statistics_;  // of residue_, kept when it goes
 };
 
 }  // namespace locus::algebra::detail

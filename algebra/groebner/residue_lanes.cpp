@@ -1,0 +1,414 @@
+#include "algebra/groebner/residue_lanes.h"
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+#include <immintrin.h>
+
+// GCC 12 sees the _mm512_undefined_epi32() inside AVX-512 intrinsics as uninitialized reads
+// (GCC bug 105593); the intrinsics are correct.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+
+namespace locus::algebra::detail {
+
+namespace {
+
+bool is_prime(std::uint32_t n) {
+    if (n < 2 || n % 2 == 0) {
+        return n == 2;
+    }
+    for (std::uint32_t d = 3; static_cast<std::uint64_t>(d) * d <= n; d += 2) {
+        if (n % d == 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// x·y·2^-32 mod p for x·y < 2^32·p (one operand below p suffices).
+inline std::uint32_t montgomery(std::uint32_t x, std::uint32_t y, std::uint32_t p,
+                                std::uint32_t neg_inverse) {
+    const std::uint64_t t = static_cast<std::uint64_t>(x) * y;
+    const std::uint32_t m = static_cast<std::uint32_t>(t) * neg_inverse;
+    // t + m·p < 2^32·p + 2^32·p: fits in 64 bits because p < 2^31.
+    const auto u = static_cast<std::uint32_t>((t + static_cast<std::uint64_t>(m) * p) >> 32);
+    return u >= p ? u - p : u;
+}
+
+inline std::uint32_t add_mod(std::uint32_t x, std::uint32_t y, std::uint32_t p) {
+    const std::uint32_t s = x + y;  // < 2p < 2^32
+    return s >= p ? s - p : s;
+}
+
+// --- portable ------------------------------------------------------------------------------
+
+void multiply_portable(std::uint32_t* out, const std::uint32_t* x, const std::uint32_t* y,
+                       const std::uint32_t* p, const std::uint32_t* ninv, std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; ++l) {
+        out[l] = montgomery(x[l], y[l], p[l], ninv[l]);
+    }
+}
+
+void add_scaled_rows_portable(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                              const std::uint32_t* rows, const std::uint32_t* b,
+                              const std::uint32_t* p, const std::uint32_t* ninv,
+                              std::size_t lanes) {
+    for (std::size_t t = 0; t < n; ++t) {
+        std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * lanes;
+        const std::uint32_t* row = rows + t * lanes;
+        for (std::size_t l = 0; l < lanes; ++l) {
+            v[l] = add_mod(v[l], montgomery(b[l], row[l], p[l], ninv[l]), p[l]);
+        }
+    }
+}
+
+void combine_digits_portable(std::uint32_t* out, const std::uint32_t* halves, std::size_t count,
+                             const std::uint32_t* powers, const std::uint32_t* p,
+                             const std::uint32_t* ninv, std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; ++l) {
+        std::uint32_t acc = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            acc = add_mod(acc, montgomery(halves[i], powers[i * lanes + l], p[l], ninv[l]), p[l]);
+        }
+        out[l] = acc;
+    }
+}
+
+// --- AVX2: blocks of 8 lanes ---------------------------------------------------------------
+
+#define LOCUS_AVX2 __attribute__((target("avx2")))
+
+LOCUS_AVX2 inline __m256i montgomery8(__m256i x, __m256i y, __m256i p, __m256i p_odd,
+                                      __m256i ninv) {
+    const __m256i te = _mm256_mul_epu32(x, y);
+    const __m256i to = _mm256_mul_epu32(_mm256_srli_epi64(x, 32), _mm256_srli_epi64(y, 32));
+    const __m256i t_low = _mm256_blend_epi32(te, _mm256_slli_epi64(to, 32), 0xAA);
+    const __m256i m = _mm256_mullo_epi32(t_low, ninv);
+    const __m256i ue = _mm256_add_epi64(te, _mm256_mul_epu32(m, p));
+    const __m256i uo = _mm256_add_epi64(to, _mm256_mul_epu32(_mm256_srli_epi64(m, 32), p_odd));
+    const __m256i u = _mm256_blend_epi32(_mm256_srli_epi64(ue, 32), uo, 0xAA);
+    return _mm256_min_epu32(u, _mm256_sub_epi32(u, p));
+}
+
+LOCUS_AVX2 inline __m256i add_mod8(__m256i x, __m256i y, __m256i p) {
+    const __m256i s = _mm256_add_epi32(x, y);
+    return _mm256_min_epu32(s, _mm256_sub_epi32(s, p));
+}
+
+LOCUS_AVX2 inline __m256i load8(const std::uint32_t* a) {
+    return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a));
+}
+
+LOCUS_AVX2 inline void store8(std::uint32_t* a, __m256i v) {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(a), v);
+}
+
+LOCUS_AVX2 void multiply_avx2(std::uint32_t* out, const std::uint32_t* x, const std::uint32_t* y,
+                              const std::uint32_t* p, const std::uint32_t* ninv,
+                              std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; l += 8) {
+        const __m256i pv = load8(p + l);
+        store8(out + l, montgomery8(load8(x + l), load8(y + l), pv, _mm256_srli_epi64(pv, 32),
+                                    load8(ninv + l)));
+    }
+}
+
+LOCUS_AVX2 void add_scaled_rows_avx2(std::uint32_t* table, const std::uint32_t* columns,
+                                     std::size_t n, const std::uint32_t* rows,
+                                     const std::uint32_t* b, const std::uint32_t* p,
+                                     const std::uint32_t* ninv, std::size_t lanes) {
+    for (std::size_t t = 0; t < n; ++t) {
+        std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * lanes;
+        const std::uint32_t* row = rows + t * lanes;
+        for (std::size_t l = 0; l < lanes; l += 8) {
+            const __m256i pv = load8(p + l);
+            const __m256i product = montgomery8(load8(b + l), load8(row + l), pv,
+                                                _mm256_srli_epi64(pv, 32), load8(ninv + l));
+            store8(v + l, add_mod8(load8(v + l), product, pv));
+        }
+    }
+}
+
+LOCUS_AVX2 void combine_digits_avx2(std::uint32_t* out, const std::uint32_t* halves,
+                                    std::size_t count, const std::uint32_t* powers,
+                                    const std::uint32_t* p, const std::uint32_t* ninv,
+                                    std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; l += 8) {
+        const __m256i pv = load8(p + l), p_odd = _mm256_srli_epi64(pv, 32), nv = load8(ninv + l);
+        __m256i acc = _mm256_setzero_si256();
+        for (std::size_t i = 0; i < count; ++i) {
+            const __m256i h = _mm256_set1_epi32(static_cast<int>(halves[i]));
+            acc = add_mod8(acc, montgomery8(h, load8(powers + i * lanes + l), pv, p_odd, nv), pv);
+        }
+        store8(out + l, acc);
+    }
+}
+
+// --- AVX-512: blocks of 16 lanes, the last one masked to 8 when K is not a multiple of 16 ---
+
+#define LOCUS_AVX512 __attribute__((target("avx512f")))
+
+LOCUS_AVX512 inline __m512i montgomery16(__m512i x, __m512i y, __m512i p, __m512i p_odd,
+                                         __m512i ninv) {
+    const __m512i te = _mm512_mul_epu32(x, y);
+    const __m512i to = _mm512_mul_epu32(_mm512_srli_epi64(x, 32), _mm512_srli_epi64(y, 32));
+    const __m512i t_low = _mm512_mask_blend_epi32(0xAAAA, te, _mm512_slli_epi64(to, 32));
+    const __m512i m = _mm512_mullo_epi32(t_low, ninv);
+    const __m512i ue = _mm512_add_epi64(te, _mm512_mul_epu32(m, p));
+    const __m512i uo = _mm512_add_epi64(to, _mm512_mul_epu32(_mm512_srli_epi64(m, 32), p_odd));
+    const __m512i u = _mm512_mask_blend_epi32(0xAAAA, _mm512_srli_epi64(ue, 32), uo);
+    return _mm512_min_epu32(u, _mm512_sub_epi32(u, p));
+}
+
+LOCUS_AVX512 inline __m512i add_mod16(__m512i x, __m512i y, __m512i p) {
+    const __m512i s = _mm512_add_epi32(x, y);
+    return _mm512_min_epu32(s, _mm512_sub_epi32(s, p));
+}
+
+// Lanes [l, l + 16) or, for the last block of a K ≡ 8 (mod 16), [l, l + 8).
+LOCUS_AVX512 inline __mmask16 block_mask(std::size_t l, std::size_t lanes) {
+    return l + 16 <= lanes ? __mmask16{0xFFFF} : __mmask16{0x00FF};
+}
+
+LOCUS_AVX512 inline __m512i load16(const std::uint32_t* a, __mmask16 mask) {
+    return _mm512_maskz_loadu_epi32(mask, a);
+}
+
+LOCUS_AVX512 void multiply_avx512(std::uint32_t* out, const std::uint32_t* x,
+                                  const std::uint32_t* y, const std::uint32_t* p,
+                                  const std::uint32_t* ninv, std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; l += 16) {
+        const __mmask16 mask = block_mask(l, lanes);
+        const __m512i pv = load16(p + l, mask);
+        const __m512i r = montgomery16(load16(x + l, mask), load16(y + l, mask), pv,
+                                       _mm512_srli_epi64(pv, 32), load16(ninv + l, mask));
+        _mm512_mask_storeu_epi32(out + l, mask, r);
+    }
+}
+
+// The lane count as a template parameter for the common widths: the loop over blocks unrolls
+// and the primes, their inverses and the multiplier stay in registers across the terms.
+template <std::size_t kLanes>
+LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::uint32_t* columns,
+                                               std::size_t n, const std::uint32_t* rows,
+                                               const std::uint32_t* b, const std::uint32_t* p,
+                                               const std::uint32_t* ninv) {
+    constexpr std::size_t kBlocks = kLanes / 16;
+    constexpr bool kTail = kLanes % 16 != 0;
+    __m512i bv[kBlocks + 1], pv[kBlocks + 1], p_odd[kBlocks + 1], nv[kBlocks + 1];
+    for (std::size_t k = 0; k < kBlocks; ++k) {
+        bv[k] = _mm512_loadu_si512(b + 16 * k);
+        pv[k] = _mm512_loadu_si512(p + 16 * k);
+        p_odd[k] = _mm512_srli_epi64(pv[k], 32);
+        nv[k] = _mm512_loadu_si512(ninv + 16 * k);
+    }
+    __m256i b_tail{}, p_tail{}, p_odd_tail{}, n_tail{};
+    if constexpr (kTail) {
+        b_tail = load8(b + 16 * kBlocks);
+        p_tail = load8(p + 16 * kBlocks);
+        p_odd_tail = _mm256_srli_epi64(p_tail, 32);
+        n_tail = load8(ninv + 16 * kBlocks);
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+        std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * kLanes;
+        const std::uint32_t* row = rows + t * kLanes;
+        for (std::size_t k = 0; k < kBlocks; ++k) {
+            const __m512i product =
+                montgomery16(bv[k], _mm512_loadu_si512(row + 16 * k), pv[k], p_odd[k], nv[k]);
+            _mm512_storeu_si512(v + 16 * k,
+                                add_mod16(_mm512_loadu_si512(v + 16 * k), product, pv[k]));
+        }
+        if constexpr (kTail) {
+            const __m256i product =
+                montgomery8(b_tail, load8(row + 16 * kBlocks), p_tail, p_odd_tail, n_tail);
+            store8(v + 16 * kBlocks, add_mod8(load8(v + 16 * kBlocks), product, p_tail));
+        }
+    }
+}
+
+LOCUS_AVX512 void add_scaled_rows_avx512(std::uint32_t* table, const std::uint32_t* columns,
+                                         std::size_t n, const std::uint32_t* rows,
+                                         const std::uint32_t* b, const std::uint32_t* p,
+                                         const std::uint32_t* ninv, std::size_t lanes) {
+    switch (lanes) {
+    case 8:
+        return add_scaled_rows_avx512_fixed<8>(table, columns, n, rows, b, p, ninv);
+    case 16:
+        return add_scaled_rows_avx512_fixed<16>(table, columns, n, rows, b, p, ninv);
+    case 24:
+        return add_scaled_rows_avx512_fixed<24>(table, columns, n, rows, b, p, ninv);
+    case 32:
+        return add_scaled_rows_avx512_fixed<32>(table, columns, n, rows, b, p, ninv);
+    case 40:
+        return add_scaled_rows_avx512_fixed<40>(table, columns, n, rows, b, p, ninv);
+    case 48:
+        return add_scaled_rows_avx512_fixed<48>(table, columns, n, rows, b, p, ninv);
+    case 56:
+        return add_scaled_rows_avx512_fixed<56>(table, columns, n, rows, b, p, ninv);
+    case 64:
+        return add_scaled_rows_avx512_fixed<64>(table, columns, n, rows, b, p, ninv);
+    default:
+        break;
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+        std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * lanes;
+        const std::uint32_t* row = rows + t * lanes;
+        for (std::size_t l = 0; l < lanes; l += 16) {
+            const __mmask16 mask = block_mask(l, lanes);
+            const __m512i pv = load16(p + l, mask);
+            const __m512i product = montgomery16(load16(b + l, mask), load16(row + l, mask), pv,
+                                                 _mm512_srli_epi64(pv, 32), load16(ninv + l, mask));
+            _mm512_mask_storeu_epi32(v + l, mask, add_mod16(load16(v + l, mask), product, pv));
+        }
+    }
+}
+
+LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t* halves,
+                                        std::size_t count, const std::uint32_t* powers,
+                                        const std::uint32_t* p, const std::uint32_t* ninv,
+                                        std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; l += 16) {
+        const __mmask16 mask = block_mask(l, lanes);
+        const __m512i pv = load16(p + l, mask), p_odd = _mm512_srli_epi64(pv, 32);
+        const __m512i nv = load16(ninv + l, mask);
+        __m512i acc = _mm512_setzero_si512();
+        for (std::size_t i = 0; i < count; ++i) {
+            const __m512i h = _mm512_set1_epi32(static_cast<int>(halves[i]));
+            acc = add_mod16(
+                acc, montgomery16(h, load16(powers + i * lanes + l, mask), pv, p_odd, nv), pv);
+        }
+        _mm512_mask_storeu_epi32(out + l, mask, acc);
+    }
+}
+
+struct Kernels {
+    const char* name;
+    void (*multiply)(std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
+                     const std::uint32_t*, const std::uint32_t*, std::size_t);
+    void (*add_scaled_rows)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
+                            const std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
+                            std::size_t);
+    void (*combine_digits)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
+                           const std::uint32_t*, const std::uint32_t*, std::size_t);
+};
+
+constexpr Kernels kPortable{"portable", multiply_portable, add_scaled_rows_portable,
+                            combine_digits_portable};
+constexpr Kernels kAvx2{"avx2", multiply_avx2, add_scaled_rows_avx2, combine_digits_avx2};
+constexpr Kernels kAvx512{"avx512", multiply_avx512, add_scaled_rows_avx512, combine_digits_avx512};
+
+const Kernels* best_supported() {
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f")) {
+        return &kAvx512;
+    }
+    if (__builtin_cpu_supports("avx2")) {
+        return &kAvx2;
+    }
+    return &kPortable;
+}
+
+std::atomic<const Kernels*>& active() {
+    static std::atomic<const Kernels*> kernels{best_supported()};
+    return kernels;
+}
+
+const Kernels& kernels() {
+    return *active().load(std::memory_order_relaxed);
+}
+
+}  // namespace
+
+LanePrimes::LanePrimes(std::size_t lanes, const std::function<bool(std::uint32_t)>& usable) {
+    if (lanes == 0 || lanes % 8 != 0) {
+        throw std::invalid_argument("LanePrimes: the number of lanes must be a multiple of 8");
+    }
+    for (std::uint32_t n = (1u << 31) - 1; primes_.size() < lanes; n -= 2) {
+        if (is_prime(n) && usable(n)) {
+            primes_.push_back(n);
+            // Newton's iteration doubles the correct low bits of p⁻¹ mod 2^32: 1 → 32 in 5 steps.
+            std::uint32_t inverse = 1;
+            for (int i = 0; i < 5; ++i) {
+                inverse *= 2 - n * inverse;
+            }
+            neg_inverses_.push_back(0u - inverse);
+        }
+    }
+}
+
+std::uint32_t LanePrimes::multiply(std::size_t lane, std::uint32_t x, std::uint32_t y) const {
+    return montgomery(x, y, primes_[lane], neg_inverses_[lane]);
+}
+
+std::uint32_t LanePrimes::to_montgomery(std::size_t lane, std::uint32_t x) const {
+    return static_cast<std::uint32_t>((static_cast<std::uint64_t>(x) << 32) % primes_[lane]);
+}
+
+namespace lanes {
+
+void multiply(std::uint32_t* out, const std::uint32_t* x, const std::uint32_t* y,
+              const LanePrimes& primes) {
+    kernels().multiply(out, x, y, primes.primes(), primes.neg_inverses(), primes.size());
+}
+
+void negate(std::uint32_t* x, const LanePrimes& primes) {
+    const std::uint32_t* p = primes.primes();
+    for (std::size_t l = 0; l < primes.size(); ++l) {
+        x[l] = x[l] == 0 ? 0 : p[l] - x[l];
+    }
+}
+
+bool is_zero(const std::uint32_t* x, std::size_t lanes) {
+    std::uint32_t any = 0;
+    for (std::size_t l = 0; l < lanes; ++l) {
+        any |= x[l];
+    }
+    return any == 0;
+}
+
+void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                     const std::uint32_t* rows, const std::uint32_t* b, const LanePrimes& primes) {
+    kernels().add_scaled_rows(table, columns, n, rows, b, primes.primes(), primes.neg_inverses(),
+                              primes.size());
+}
+
+void combine_digits(std::uint32_t* out, const std::uint32_t* halves, std::size_t count,
+                    const std::uint32_t* powers, const LanePrimes& primes) {
+    kernels().combine_digits(out, halves, count, powers, primes.primes(), primes.neg_inverses(),
+                             primes.size());
+}
+
+const char* kernel_name() {
+    return kernels().name;
+}
+
+std::vector<std::string> supported_kernels() {
+    std::vector<std::string> names{"portable"};
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2")) {
+        names.emplace_back("avx2");
+    }
+    if (__builtin_cpu_supports("avx512f")) {
+        names.emplace_back("avx512");
+    }
+    return names;
+}
+
+void select_kernels(const std::string& name) {
+    const std::vector<std::string> supported = supported_kernels();
+    for (const Kernels* k : {&kPortable, &kAvx2, &kAvx512}) {
+        if (name == k->name &&
+            std::find(supported.begin(), supported.end(), name) != supported.end()) {
+            active().store(k);
+            return;
+        }
+    }
+    throw std::invalid_argument("lane kernels not supported here: " + name);
+}
+
+}  // namespace lanes
+
+}  // namespace locus::algebra::detail

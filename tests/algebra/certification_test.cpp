@@ -1,0 +1,372 @@
+// The certification's arithmetic (issue 7): the residue lanes against scalar modular arithmetic
+// done another way (64-bit products and a modular inverse of 2^32, no Montgomery reduction);
+// the size bounds against exact powers; the residue system's reconstructions and remainders
+// against GMP; and the residue reducer against the GMP reducer, which must make the same
+// steps on the same integers and reach the same verdicts, on bases from the bench suite, on
+// corrupted ones, and on lanes so narrow that reductions start again and rebuild their values.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include <flint/ulong_extras.h>
+
+#include "algebra/groebner/exact_zero_reducer.h"
+#include "algebra/groebner/log_bound.h"
+#include "algebra/groebner/pair_criteria.h"
+#include "algebra/groebner/residue_lanes.h"
+#include "algebra/groebner/residue_system.h"
+#include "algebra/groebner/residue_zero_reducer.h"
+#include "algebra/groebner/verify.h"
+#include "algebra/modular/modular_groebner.h"
+#include "algebra/parse.h"
+#include "tests/support/test_data.h"
+
+namespace locus::algebra::detail {
+namespace {
+
+namespace lb = log_bound;
+
+LanePrimes primes_for(std::size_t lanes) {
+    return LanePrimes(lanes, [](std::uint32_t) { return true; });
+}
+
+// x·y·2^−32 mod p, computed as x·y·(2^32)⁻¹ with a modular inverse.
+std::uint32_t reference_montgomery(std::uint32_t x, std::uint32_t y, std::uint32_t p) {
+    const std::uint64_t r_inverse = n_invmod((std::uint64_t{1} << 32) % p, p);
+    const std::uint64_t xy = (static_cast<std::uint64_t>(x) % p) * (y % p) % p;
+    return static_cast<std::uint32_t>(xy * r_inverse % p);
+}
+
+// Restores the best kernels when a test that selected others ends.
+struct KernelGuard {
+    ~KernelGuard() { lanes::select_kernels(lanes::supported_kernels().back()); }
+};
+
+TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
+    KernelGuard guard;
+    std::mt19937_64 rng(7);
+    for (const std::string& kernel : lanes::supported_kernels()) {
+        lanes::select_kernels(kernel);
+        EXPECT_EQ(kernel, lanes::kernel_name());
+        // 72 lanes: past the widths the AVX-512 kernels are specialised for.
+        for (const std::size_t width : {8u, 16u, 24u, 40u, 72u}) {
+            const LanePrimes primes = primes_for(width);
+            std::vector<std::uint32_t> x(width), y(width), out(width);
+            const auto random_residues = [&](std::vector<std::uint32_t>& v, bool below_p) {
+                for (std::size_t l = 0; l < v.size(); ++l) {
+                    v[l] = static_cast<std::uint32_t>(
+                        rng() % (below_p ? primes.prime(l % width) : (1ull << 32)));
+                }
+            };
+            random_residues(x, true);
+            random_residues(y, true);
+            lanes::multiply(out.data(), x.data(), y.data(), primes);
+            for (std::size_t l = 0; l < width; ++l) {
+                ASSERT_EQ(out[l], reference_montgomery(x[l], y[l], primes.prime(l)))
+                    << kernel << " lanes " << width << " lane " << l;
+            }
+            // A table of 50 columns; a row of 20 terms lands on 20 distinct ones.
+            std::vector<std::uint32_t> table(50 * width), rows(20 * width), b(width);
+            random_residues(table, true);
+            random_residues(rows, true);
+            random_residues(b, true);
+            std::vector<std::uint32_t> columns(50);
+            for (std::uint32_t c = 0; c < 50; ++c) {
+                columns[c] = c;
+            }
+            std::shuffle(columns.begin(), columns.end(), rng);
+            columns.resize(20);
+            std::vector<std::uint32_t> expected = table;
+            for (std::size_t t = 0; t < 20; ++t) {
+                for (std::size_t l = 0; l < width; ++l) {
+                    const std::uint32_t p = primes.prime(l);
+                    std::uint32_t& v = expected[columns[t] * width + l];
+                    v = static_cast<std::uint32_t>(
+                        (v + reference_montgomery(b[l], rows[t * width + l], p)) % p);
+                }
+            }
+            lanes::add_scaled_rows(table.data(), columns.data(), 20, rows.data(), b.data(), primes);
+            ASSERT_EQ(table, expected) << kernel << " lanes " << width;
+            // Digits of any 32 bits, powers below p.
+            std::vector<std::uint32_t> halves(6), powers(6 * width);
+            random_residues(halves, false);
+            random_residues(powers, true);
+            lanes::combine_digits(out.data(), halves.data(), 6, powers.data(), primes);
+            for (std::size_t l = 0; l < width; ++l) {
+                const std::uint32_t p = primes.prime(l);
+                std::uint64_t sum = 0;
+                for (std::size_t i = 0; i < 6; ++i) {
+                    sum = (sum + reference_montgomery(halves[i], powers[i * width + l], p)) % p;
+                }
+                ASSERT_EQ(out[l], sum) << kernel << " lanes " << width << " lane " << l;
+            }
+        }
+    }
+}
+
+TEST(ResidueLanes, PrimesAreTheLargestUsableOnes) {
+    const LanePrimes all = primes_for(8);
+    EXPECT_EQ(all.prime(0), 2147483647u);  // 2^31 − 1
+    // Skipping the first: the next eight are the others shifted by one.
+    const LanePrimes skipping(8, [](std::uint32_t p) { return p != 2147483647u; });
+    for (std::size_t l = 0; l + 1 < 8; ++l) {
+        EXPECT_EQ(skipping.prime(l), all.prime(l + 1));
+    }
+    EXPECT_THROW(LanePrimes(12, [](std::uint32_t) { return true; }), std::invalid_argument);
+}
+
+// A random integer of up to `bits` bits, of either sign.
+void random_integer(mpz_t out, std::size_t bits, std::mt19937_64& rng) {
+    mpz_set_ui(out, 0);
+    const std::size_t length = 1 + rng() % bits;
+    for (std::size_t done = 0; done < length; done += 32) {
+        mpz_mul_2exp(out, out, 32);
+        mpz_add_ui(out, out, rng() & 0xFFFFFFFFu);
+    }
+    mpz_fdiv_q_2exp(out, out, (length + 31) / 32 * 32 - length);
+    if (rng() % 2 == 0) {
+        mpz_neg(out, out);
+    }
+}
+
+TEST(LogBound, UpperAndLowerBoundTheSizeExactly) {
+    std::mt19937_64 rng(11);
+    mpz_t v, power, two_power;
+    mpz_inits(v, power, two_power, nullptr);
+    for (int k = 0; k < test::seed_count(300); ++k) {
+        random_integer(v, 1 + rng() % 1500, rng);
+        if (mpz_sgn(v) == 0) {
+            continue;
+        }
+        // |v| ≤ 2^(u/64) ⟺ |v|^64 ≤ 2^u.
+        mpz_abs(power, v);
+        mpz_pow_ui(power, power, lb::kPerBit);
+        const lb::Units upper = lb::upper(v), lower = lb::lower(v);
+        ASSERT_GE(upper, 0);
+        mpz_set_ui(two_power, 1);
+        mpz_mul_2exp(two_power, two_power, static_cast<mp_bitcnt_t>(upper));
+        EXPECT_LE(mpz_cmp(power, two_power), 0) << "upper bound too small";
+        mpz_set_ui(two_power, 1);
+        mpz_mul_2exp(two_power, two_power, static_cast<mp_bitcnt_t>(std::max<lb::Units>(0, lower)));
+        EXPECT_GE(mpz_cmp(power, two_power), 0) << "lower bound too large";
+        EXPECT_LE(upper - lower, 2) << "bounds within a unit of the truth on each side";
+    }
+    mpz_set_ui(v, 0);
+    EXPECT_TRUE(lb::is_zero(lb::upper(v)));
+    mpz_clears(v, power, two_power, nullptr);
+}
+
+TEST(LogBound, SumBoundCoversBothSummands) {
+    std::mt19937_64 rng(13);
+    for (int k = 0; k < test::seed_count(20000); ++k) {
+        const auto x = static_cast<lb::Units>(rng() % 200000);
+        const auto y = static_cast<lb::Units>(x - static_cast<lb::Units>(rng() % 3000));
+        const lb::Units s = lb::of_sum(x, y);
+        // 2^(x/64) + 2^(y/64) ≤ 2^(s/64), divided through by 2^(s/64).
+        const long double total = std::exp2(static_cast<long double>(x - s) / lb::kPerBit) +
+                                  std::exp2(static_cast<long double>(y - s) / lb::kPerBit);
+        ASSERT_LE(total, 1.0L + 1e-15L) << x << " " << y << " " << s;
+        ASSERT_LE(s - std::max(x, y), lb::kPerBit + 1) << "a bit and a rounding unit at most";
+    }
+    EXPECT_EQ(lb::of_sum(lb::kZero, 640), 641);  // zero adds the smallest unit
+}
+
+TEST(ResidueSystem, ReconstructsValuesAndTheirRemainders) {
+    std::mt19937_64 rng(17);
+    mpz_t v, back, l, expected;
+    mpz_inits(v, back, l, expected, nullptr);
+    for (const std::size_t width : {8u, 24u, 40u}) {
+        ResidueSystem system(primes_for(width));
+        const auto capacity_bits = static_cast<std::size_t>(system.capacity() / lb::kPerBit);
+        std::vector<std::uint32_t> residues(width), digits(width);
+        for (int k = 0; k < test::seed_count(200); ++k) {
+            random_integer(v, capacity_bits, rng);
+            system.residues(v, residues.data(), false);
+            lanes::multiply(digits.data(), residues.data(), system.digit_factors(),
+                            system.primes());
+            system.reconstruct(digits.data(), back);
+            ASSERT_EQ(mpz_cmp(v, back), 0) << "lanes " << width;
+            // Remainders modulo divisors of one to five limbs.
+            random_integer(l, 1 + rng() % 300, rng);
+            mpz_abs(l, l);
+            if (mpz_cmp_ui(l, 2) < 0) {
+                continue;
+            }
+            const ResidueSystem::Divisor d = system.divisor(l);
+            std::vector<mp_limb_t> remainder(d.limbs.size());
+            system.remainder(digits.data(), d, remainder.data());
+            mpz_fdiv_r(expected, v, l);
+            mpz_set_ui(back, 0);
+            for (std::size_t i = remainder.size(); i-- > 0;) {
+                mpz_mul_2exp(back, back, 64);
+                mpz_add_ui(back, back, remainder[i]);
+            }
+            ASSERT_EQ(mpz_cmp(back, expected), 0) << "lanes " << width;
+        }
+        // The Montgomery form is the value times 2^32.
+        mpz_set_si(v, -123456789);
+        system.residues(v, residues.data(), true);
+        for (std::size_t lane = 0; lane < width; ++lane) {
+            const std::uint32_t p = system.primes().prime(lane);
+            const std::uint64_t plain = static_cast<std::uint64_t>(p - 123456789 % p) % p;
+            EXPECT_EQ(residues[lane], plain * ((std::uint64_t{1} << 32) % p) % p);
+        }
+    }
+    mpz_clears(v, back, l, expected, nullptr);
+}
+
+// The basis and the Gebauer–Möller pairs, as certify_groebner_basis builds them.
+struct Certification {
+    RingPtr ring;
+    std::vector<BasisElement> elements;
+    std::vector<CriticalPair> pairs;
+    std::vector<IntegerPolynomial> generators;
+};
+
+Certification certification_of(const std::vector<Polynomial>& basis,
+                               const std::vector<Polynomial>& generators) {
+    Certification c;
+    c.ring = basis.front().ring();
+    CriteriaCounts counts;
+    for (const Polynomial& g : basis) {
+        c.elements.push_back({to_integer_polynomial(g), false});
+        gebauer_moller_update(c.elements, c.pairs, c.elements.size() - 1, c.ring->layout(), counts);
+    }
+    for (const Polynomial& f : generators) {
+        c.generators.push_back(to_integer_polynomial(f));
+    }
+    return c;
+}
+
+// Every generator and pair through both reducers: the same verdicts after the same number of
+// steps. Returns how many were not zero.
+std::size_t compare_reducers(const Certification& c, std::size_t lanes, const std::string& what,
+                             ResidueZeroReducer::Statistics* statistics = nullptr) {
+    const MonomialLayout& layout = c.ring->layout();
+    ResidueZeroReducer residue(layout, c.elements, lanes);
+    ExactZeroReducer exact(layout, c.elements);
+    std::size_t nonzero = 0;
+    for (std::size_t k = 0; k < c.generators.size(); ++k) {
+        ReductionCounts r, e;
+        const bool by_residues = residue.reduces_to_zero(c.generators[k], r);
+        EXPECT_EQ(by_residues, exact.reduces_to_zero(c.generators[k], e)) << what << " input " << k;
+        EXPECT_EQ(r.steps, e.steps) << what << " input " << k;
+        nonzero += by_residues ? 0 : 1;
+    }
+    for (std::size_t k = 0; k < c.pairs.size(); ++k) {
+        const CriticalPair& pair = c.pairs[k];
+        ReductionCounts r, e;
+        const bool by_residues =
+            residue.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(), r);
+        EXPECT_EQ(by_residues,
+                  exact.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(), e))
+            << what << " pair " << k;
+        EXPECT_EQ(r.steps, e.steps) << what << " pair " << k;
+        nonzero += by_residues ? 0 : 1;
+    }
+    if (statistics != nullptr) {
+        *statistics = residue.statistics();
+    }
+    return nonzero;
+}
+
+std::vector<Polynomial> with_coefficient_changed(std::vector<Polynomial> basis, std::size_t e) {
+    Polynomial& g = basis[e];
+    Polynomial changed(g.ring());
+    for (std::size_t i = 0; i < g.num_terms(); ++i) {
+        Rational c = g.coefficient(i);
+        if (i + 1 == g.num_terms()) {
+            c = c + Rational(1, 7);
+        }
+        changed.push_back_term(c, g.monomial(i));
+    }
+    g = changed;
+    return basis;
+}
+
+TEST(ZeroReducers, ResidueAndGmpReducersMakeTheSameSteps) {
+    std::size_t restarts = 0, rebuilds = 0;
+    for (const char* name : {"cyclic5", "katsura6", "eco6", "noon4", "katsura7", "cyclic6"}) {
+        const IdealFile ideal = parse_ideal_file(
+            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        const GroebnerResult r = modular_groebner(ideal.generators);
+        const Certification good = certification_of(r.basis, ideal.generators);
+        EXPECT_EQ(compare_reducers(good, 0, name), 0u) << name;
+        // A corrupted element: some reductions are no longer zero, the same ones in both.
+        const Certification bad = certification_of(
+            with_coefficient_changed(r.basis, r.basis.size() / 2), ideal.generators);
+        EXPECT_GT(compare_reducers(bad, 0, std::string(name) + " corrupted"), 0u) << name;
+        if (ResidueZeroReducer::initial_lanes(good.elements) > 8) {
+            // Narrower lanes than the values need: reductions start again on more, and values
+            // are rebuilt in full, with the same steps and verdicts.
+            ResidueZeroReducer::Statistics narrow;
+            EXPECT_EQ(compare_reducers(good, 8, std::string(name) + " on 8 lanes", &narrow), 0u);
+            EXPECT_GT(narrow.restarts + narrow.rebuilds, 0u) << name;
+            restarts += narrow.restarts;
+            rebuilds += narrow.rebuilds;
+            EXPECT_GT(compare_reducers(bad, 8, std::string(name) + " corrupted, 8 lanes"), 0u);
+        }
+    }
+    EXPECT_GT(rebuilds, 0u);
+    // Three dense quadrics with six-digit coefficients: the basis' own coefficients (hundreds
+    // of bits) do not fit 8 lanes, so reductions must start again on more.
+    std::mt19937_64 rng(19);
+    std::string text = "vars: x,y,z\norder: grevlex\n";
+    for (int f = 0; f < 3; ++f) {
+        for (const char* m : {"x^2", "x*y", "x*z", "y^2", "y*z", "z^2", "x", "y", "z", "1"}) {
+            // Appended piece by piece: GCC 12 warns (-Wrestrict) on the chained operator+.
+            text.append("+").append(std::to_string(100000 + rng() % 900000)).append("*").append(m);
+        }
+        text += "\n";
+    }
+    const IdealFile dense = parse_ideal_file(text);
+    const GroebnerResult r = modular_groebner(dense.generators);
+    const Certification c = certification_of(r.basis, dense.generators);
+    ASSERT_GT(ResidueZeroReducer::initial_lanes(c.elements), 8u);
+    ResidueZeroReducer::Statistics narrow;
+    EXPECT_EQ(compare_reducers(c, 8, "dense quadrics on 8 lanes", &narrow), 0u);
+    EXPECT_GT(narrow.restarts, 0u);
+    EXPECT_GT(narrow.lanes, 8u);
+}
+
+TEST(ZeroReducers, EveryKernelCertifiesTheSameWay) {
+    KernelGuard guard;
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura6.ideal"));
+    const GroebnerResult r = modular_groebner(ideal.generators);
+    std::vector<std::size_t> steps;
+    for (const std::string& kernel : lanes::supported_kernels()) {
+        lanes::select_kernels(kernel);
+        const BasisCheck check = certify_groebner_basis(r.basis, ideal.generators);
+        EXPECT_TRUE(check.ok) << kernel;
+        EXPECT_GT(check.lanes, 0u) << kernel;
+        steps.push_back(check.reduction_steps);
+    }
+    EXPECT_EQ(std::count(steps.begin(), steps.end(), steps.front()),
+              static_cast<long>(steps.size()));
+}
+
+TEST(ZeroReducers, HugeCoefficientsAreLeftToGmpIntegers) {
+    // Two constants of about 9 000 bits: the basis' coefficients need more lanes than the
+    // residue reducer takes on.
+    std::string a = "1", b = "3";
+    for (int k = 0; k < 2700; ++k) {
+        a += static_cast<char>('0' + (k * 7 + 3) % 10);
+        b += static_cast<char>('0' + (k * 3 + 1) % 10);
+    }
+    const IdealFile ideal =
+        parse_ideal_file("vars: x,y\norder: grevlex\nx^2-" + a + "*y\n" + "x*y-" + b + "\n");
+    const GroebnerResult r = groebner(ideal.generators);
+    const BasisCheck check = certify_groebner_basis(r.basis, ideal.generators);
+    EXPECT_TRUE(check.ok);
+    EXPECT_TRUE(check.exact_fallback);
+    EXPECT_EQ(check.lanes, 0u);
+    const BasisCheck corrupted =
+        certify_groebner_basis(with_coefficient_changed(r.basis, 0), ideal.generators);
+    EXPECT_FALSE(corrupted.ok);
+}
+
+}  // namespace
+}  // namespace locus::algebra::detail
