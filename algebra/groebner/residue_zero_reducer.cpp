@@ -27,6 +27,11 @@ struct OwnedInteger {
     OwnedInteger& operator=(const OwnedInteger&) = delete;
 };
 
+// Eight lanes more (248 bits) while they are few, a quarter more past 64.
+std::size_t next_lanes(std::size_t lanes) {
+    return lanes < 64 ? lanes + 8 : (lanes + lanes / 4 + 7) / 8 * 8;
+}
+
 }  // namespace
 
 std::size_t ResidueZeroReducer::initial_lanes(const std::vector<BasisElement>& basis) {
@@ -36,12 +41,13 @@ std::size_t ResidueZeroReducer::initial_lanes(const std::vector<BasisElement>& b
             bits = std::max<std::size_t>(bits, fmpz_bits(c.get()));
         }
     }
-    const std::size_t digits = (2 * bits + 64 + 2) / kLaneBits + 1;
+    const std::size_t digits = (bits + 64 + 2) / kLaneBits + 1;
     return (digits + 1 + 7) / 8 * 8;  // and the redundant lane
 }
 
 ResidueZeroReducer::ResidueZeroReducer(const MonomialLayout& layout,
-                                       const std::vector<BasisElement>& basis, std::size_t lanes)
+                                       const std::vector<BasisElement>& basis, std::size_t lanes,
+                                       bool learn)
     : layout_(layout), basis_(basis), elements_(basis.size()), table_(layout.words()) {
     search_.gather(basis, layout);
     for (std::size_t k = 0; k < basis.size(); ++k) {
@@ -54,12 +60,15 @@ ResidueZeroReducer::ResidueZeroReducer(const MonomialLayout& layout,
         }
         for (std::size_t j = 1; j < g.size(); ++j) {
             e.term_bounds.push_back(lb::upper(g.coefficients[j].get()));
+            e.largest_term_bound = std::max(e.largest_term_bound, e.term_bounds.back());
         }
     }
     mpz_inits(gcd_, cofactor_, scratch_, nullptr);
     product_.resize(layout.words());
     multiplier_.resize(layout.words());
-    use_lanes(lanes != 0 ? lanes : initial_lanes(basis));
+    first_lanes_ = lanes != 0 ? lanes : initial_lanes(basis);
+    learn_ = learn;
+    activate(first_lanes_);
 }
 
 ResidueZeroReducer::~ResidueZeroReducer() {
@@ -69,17 +78,19 @@ ResidueZeroReducer::~ResidueZeroReducer() {
     mpz_clears(gcd_, cofactor_, scratch_, nullptr);
 }
 
-void ResidueZeroReducer::use_lanes(std::size_t lanes) {
+std::unique_ptr<ResidueZeroReducer::Level> ResidueZeroReducer::make_level(std::size_t lanes) const {
     // Primes that divide a leading coefficient are skipped: every L must be invertible.
     const auto usable = [this](std::uint32_t p) {
         return std::none_of(elements_.begin(), elements_.end(),
                             [p](const Element& e) { return mpz_fdiv_ui(e.leading, p) == 0; });
     };
-    system_ = std::make_unique<ResidueSystem>(LanePrimes(lanes, usable));
-    const LanePrimes& primes = system_->primes();
-    element_lanes_.assign(basis_.size(), ElementLanes{});
+    auto level = std::make_unique<Level>();
+    level->system = std::make_unique<ResidueSystem>(LanePrimes(lanes, usable));
+    ResidueSystem& system = *level->system;
+    const LanePrimes& primes = system.primes();
+    level->elements.resize(basis_.size());
     for (std::size_t k = 0; k < basis_.size(); ++k) {
-        ElementLanes& el = element_lanes_[k];
+        ElementLanes& el = level->elements[k];
         const Element& e = elements_[k];
         el.leading_inverse.resize(lanes);
         for (std::size_t l = 0; l < lanes; ++l) {
@@ -90,37 +101,45 @@ void ResidueZeroReducer::use_lanes(std::size_t lanes) {
         const IntegerPolynomial& g = basis_[k].poly;
         el.rows.resize(g.size() > 1 ? (g.size() - 1) * lanes : 0);
         for (std::size_t j = 1; j < g.size(); ++j) {
-            system_->residues(g.coefficients[j].get(), el.rows.data() + (j - 1) * lanes, true);
+            system.residues(g.coefficients[j].get(), el.rows.data() + (j - 1) * lanes, true);
         }
         if (mpz_cmp_ui(e.leading, 1) != 0) {
-            el.divisor = system_->divisor(e.leading);
+            el.divisor = system.divisor(e.leading);
         }
     }
-    values_.assign(table_.size() * lanes, 0);
-    std::fill(bound_.begin(), bound_.end(), lb::kZero);
+    return level;
+}
+
+void ResidueZeroReducer::activate(std::size_t lanes) {
+    std::unique_ptr<Level>& slot = levels_[lanes];
+    if (!slot) {
+        slot = make_level(lanes);
+    }
+    active_ = slot.get();
+    // Columns numbered while another level was active; every column is zero between reductions.
+    level().values.resize(table_.size() * lanes, 0);
     lambda_.resize(lanes);
     lambda_digits_.resize(lanes);
     multiplier_lanes_.resize(lanes);
     digits_.resize(lanes);
     factor_.resize(lanes);
-    statistics_.lanes = lanes;
-    begin();
+    statistics_.lanes = std::max(statistics_.lanes, lanes);
 }
 
 void ResidueZeroReducer::begin() {
-    const LanePrimes& primes = system_->primes();
+    const LanePrimes& primes = level().system->primes();
     for (std::size_t l = 0; l < lanes(); ++l) {
         lambda_[l] = primes.to_montgomery(l, 1);
     }
-    lanes::multiply(lambda_digits_.data(), lambda_.data(), system_->digit_factors(), primes);
+    lanes::multiply(lambda_digits_.data(), lambda_.data(), level().system->digit_factors(), primes);
     offset_ = 0;
     highest_bound_ = lb::kZero;
 }
 
 void ResidueZeroReducer::scale_lambda(const std::uint32_t* factor) {
-    const LanePrimes& primes = system_->primes();
+    const LanePrimes& primes = level().system->primes();
     lanes::multiply(lambda_.data(), lambda_.data(), factor, primes);
-    lanes::multiply(lambda_digits_.data(), lambda_.data(), system_->digit_factors(), primes);
+    lanes::multiply(lambda_digits_.data(), lambda_.data(), level().system->digit_factors(), primes);
 }
 
 lb::Units ResidueZeroReducer::true_bound(std::uint32_t c) const {
@@ -135,7 +154,7 @@ void ResidueZeroReducer::set_true_bound(std::uint32_t c, lb::Units bound) {
 std::uint32_t ResidueZeroReducer::column(const std::uint64_t* m) {
     const std::uint32_t c = table_.insert(m);
     if (c == bound_.size()) {
-        values_.resize(values_.size() + lanes(), 0);
+        level().values.resize(level().values.size() + lanes(), 0);
         bound_.push_back(lb::kZero);
         pending_.push_back(0);
         row_of_column_.push_back(kNotLookedUp);
@@ -202,14 +221,14 @@ void ResidueZeroReducer::add_multiple(const std::uint32_t* multiplier, lb::Units
         const std::uint32_t c = column(product_.data());
         const lb::Units bound =
             lb::of_sum(true_bound(c), lb::of_product(multiplier_bound, bounds[j - from]));
-        if (bound > system_->capacity()) {
-            throw LanesExhausted{};
+        if (bound > level().system->capacity()) {
+            throw LanesExhausted{bound};
         }
         touched_.push_back(c);
         touched_bounds_.push_back(bound);
     }
-    lanes::add_scaled_rows(values_.data(), touched_.data(), touched_.size(), rows, multiplier,
-                           system_->primes());
+    lanes::add_scaled_rows(level().values.data(), touched_.data(), touched_.size(), rows,
+                           multiplier, level().system->primes());
     for (std::size_t t = 0; t < touched_.size(); ++t) {
         set_true_bound(touched_[t], touched_bounds_[t]);
         push(touched_[t]);
@@ -227,7 +246,7 @@ void ResidueZeroReducer::clear_pending() {
 
 void ResidueZeroReducer::rebuild_pending(std::uint32_t lc) {
     ++statistics_.rebuilds;
-    const LanePrimes& primes = system_->primes();
+    const LanePrimes& primes = level().system->primes();
     std::vector<std::uint32_t> columns(heap_);
     columns.push_back(lc);
     std::vector<OwnedInteger> values(columns.size());
@@ -235,7 +254,7 @@ void ResidueZeroReducer::rebuild_pending(std::uint32_t lc) {
     mpz_ptr content = owned_content.value;
     for (std::size_t h = 0; h < columns.size(); ++h) {
         lanes::multiply(digits_.data(), value(columns[h]), lambda_digits_.data(), primes);
-        system_->reconstruct(digits_.data(), values[h].value);
+        level().system->reconstruct(digits_.data(), values[h].value);
         mpz_gcd(content, content, values[h].value);
     }
     if (mpz_cmp_ui(content, 1) > 0) {
@@ -255,7 +274,7 @@ void ResidueZeroReducer::rebuild_pending(std::uint32_t lc) {
             scale_lambda(factor_.data());  // V/content = (Λ/content)·s
         } else {
             for (std::size_t h = 0; h < columns.size(); ++h) {
-                system_->residues(values[h].value, value(columns[h]), false);
+                level().system->residues(values[h].value, value(columns[h]), false);
             }
             begin();  // Λ = 1: the residues are the values themselves now
         }
@@ -272,7 +291,7 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
     const auto descending = [this](std::uint32_t x, std::uint32_t y) {
         return rank_[x] < rank_[y];
     };
-    const LanePrimes& primes = system_->primes();
+    const LanePrimes& primes = level().system->primes();
     const std::size_t width = lanes();
     std::size_t rebuilds = 0;
     bool just_rebuilt = false;
@@ -294,7 +313,7 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
         }
         const Row row = rows_[static_cast<std::size_t>(r)];
         const Element& e = elements_[row.element];
-        const ElementLanes& el = element_lanes_[row.element];
+        const ElementLanes& el = level().elements[row.element];
         const std::uint32_t* s = value(c);
 
         // g = gcd(V, L) for the fraction-free value V = Λ·s of the leading coefficient, from
@@ -304,7 +323,7 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
         if (el.divisor) {
             lanes::multiply(digits_.data(), s, lambda_digits_.data(), primes);
             remainder_.resize(el.divisor->limbs.size());
-            system_->remainder(digits_.data(), *el.divisor, remainder_.data());
+            level().system->remainder(digits_.data(), *el.divisor, remainder_.data());
             if (std::all_of(remainder_.begin(), remainder_.end(),
                             [](mp_limb_t x) { return x == 0; })) {
                 gcd_lower = e.leading_lower;
@@ -324,34 +343,35 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
         const lb::Units offset = scaled ? offset_ + lb::upper(cofactor_) : offset_;
         const std::size_t length = basis_[row.element].poly.size() - 1;
         const std::uint32_t* columns = row_columns_.data() + row.offset;
-        const lb::Units capacity = system_->capacity();
-        bool fits = !scaled || highest_bound_ + offset <= capacity;
-        // The new bounds, relative to the new offset: b's bound plus the coefficient's, summed
-        // with the column's (locals throughout: bound_ and the members alias as int64s).
-        touched_bounds_.resize(length);
-        {
-            const lb::Units* old = bound_.data();
-            const lb::Units* term = e.term_bounds.data();
-            lb::Units* fresh = touched_bounds_.data();
-            const lb::Units relative_b = b_bound - offset, limit = capacity - offset;
+        const lb::Units capacity = level().system->capacity();
+        // Bounds relative to the new offset (those of bound_ are: multiplying by a moves only
+        // the offset). Every new bound is at most the sum of the highest pending one and the
+        // largest product; when that fits, the step goes ahead and the bounds are computed
+        // with the pushes, in one pass after the kernel. Otherwise each is computed first.
+        const lb::Units relative_b = b_bound - offset, limit = capacity - offset;
+        const bool surely_fits =
+            lb::of_sum(highest_bound_, relative_b + e.largest_term_bound) <= limit;
+        if (!surely_fits) {
+            bool fits = !scaled || highest_bound_ <= limit;
             lb::Units highest = lb::kZero;
             for (std::size_t t = 0; t < length; ++t) {
-                fresh[t] = lb::of_sum(old[columns[t]], relative_b + term[t]);
-                highest = std::max(highest, fresh[t]);
+                highest = std::max(highest,
+                                   lb::of_sum(bound_[columns[t]], relative_b + e.term_bounds[t]));
             }
             fits = fits && highest <= limit;
-        }
-        if (!fits) {
-            if (just_rebuilt || rebuilds == kRebuildsBeforeMoreLanes) {
-                std::fill_n(value(c), width, 0);
-                bound_[c] = lb::kZero;
-                throw LanesExhausted{};
+            if (!fits) {
+                if (just_rebuilt || rebuilds == kRebuildsBeforeMoreLanes) {
+                    std::fill_n(value(c), width, 0);
+                    bound_[c] = lb::kZero;
+                    throw LanesExhausted{std::max(scaled ? highest_bound_ : lb::kZero, highest) +
+                                         offset};
+                }
+                rebuild_pending(c);
+                ++rebuilds;
+                just_rebuilt = true;
+                push(c);
+                continue;
             }
-            rebuild_pending(c);
-            ++rebuilds;
-            just_rebuilt = true;
-            push(c);
-            continue;
         }
         just_rebuilt = false;
 
@@ -362,18 +382,21 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
         bound_[c] = lb::kZero;
         if (scaled) {
             offset_ = offset;
-            system_->residues(cofactor_, factor_.data(), true);
+            level().system->residues(cofactor_, factor_.data(), true);
             scale_lambda(factor_.data());
         }
-        lanes::add_scaled_rows(values_.data(), columns, length, el.rows.data(),
+        lanes::add_scaled_rows(level().values.data(), columns, length, el.rows.data(),
                                multiplier_lanes_.data(), primes);
         {
+            // Locals throughout: bound_ and the members alias as int64s.
             lb::Units* bound = bound_.data();
+            const lb::Units* term = e.term_bounds.data();
             lb::Units highest = highest_bound_;
             for (std::size_t t = 0; t < length; ++t) {
                 const std::uint32_t column = columns[t];
-                bound[column] = touched_bounds_[t];
-                highest = std::max(highest, touched_bounds_[t]);
+                const lb::Units fresh = lb::of_sum(bound[column], relative_b + term[t]);
+                bound[column] = fresh;
+                highest = std::max(highest, fresh);
                 if (pending_[column] == 0) {
                     pending_[column] = 1;
                     heap_.push_back(column);
@@ -392,23 +415,48 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
 }
 
 template <typename Load>
-bool ResidueZeroReducer::reduce_with_retries(Load load, ReductionCounts& counts) {
-    for (;;) {
+bool ResidueZeroReducer::reduce_with_retries(std::uint32_t degree, Load load,
+                                             ReductionCounts& counts) {
+    // Reductions begin on the fewest lanes that most of those of their degree fit: narrower
+    // lanes are read faster, and a reduction that outgrows them starts again on more. When a
+    // quarter of those begun on a degree's lanes have had to, the degree's start moves up. A
+    // degree not seen yet starts where the degree below it does (values grow with degree).
+    Start& start = starts_[degree];
+    if (start.lanes == 0) {
+        const auto below = starts_.find(degree);
+        start.lanes = below == starts_.begin() ? first_lanes_ : std::prev(below)->second.lanes;
+    }
+    for (std::size_t lanes = start.lanes;;) {
+        activate(lanes);
         ReductionCounts attempt;
         try {
             begin();
             load();
             const bool zero = reduce_loaded(attempt);
             counts.steps += attempt.steps;
+            ++start.begun;
+            start.outgrown += lanes > start.lanes ? 1 : 0;
+            if (learn_ && start.begun >= 4 && 4 * start.outgrown > start.begun) {
+                const auto above = levels_.upper_bound(start.lanes);
+                start = {above != levels_.end() ? above->first : next_lanes(start.lanes), 0, 0};
+            }
             return zero;
-        } catch (const LanesExhausted&) {
+        } catch (const LanesExhausted& exhausted) {
             clear_pending();
             ++statistics_.restarts;
-            const std::size_t more = lanes() + std::max<std::size_t>(8, lanes() / 4 / 8 * 8);
-            if (more > kMostLanes) {
+            // Room for half as much again as the bound that did not fit: values that outgrew
+            // one level tend to keep growing, and every start again repeats the work.
+            const auto bits =
+                static_cast<std::size_t>(std::max<lb::Units>(0, exhausted.needed) / lb::kPerBit);
+            std::size_t wanted = next_lanes(lanes);
+            while ((wanted - 1) * kLaneBits < bits + bits / 2 + 3) {
+                wanted = next_lanes(wanted);
+            }
+            if (wanted > kMostLanes) {
                 throw TooWide{};
             }
-            use_lanes(more);
+            const auto existing = levels_.lower_bound(wanted);
+            lanes = existing != levels_.end() ? existing->first : wanted;
         }
     }
 }
@@ -418,12 +466,14 @@ bool ResidueZeroReducer::reduces_to_zero(const IntegerPolynomial& p, ReductionCo
         return true;
     }
     return reduce_with_retries(
+        layout_.total_degree(p.monomial(0, layout_.words())),
         [&] {
             const std::size_t width = lanes();
             load_rows_.resize(p.size() * width);
             load_bounds_.resize(p.size());
             for (std::size_t j = 0; j < p.size(); ++j) {
-                system_->residues(p.coefficients[j].get(), load_rows_.data() + j * width, true);
+                level().system->residues(p.coefficients[j].get(), load_rows_.data() + j * width,
+                                         true);
                 load_bounds_[j] = lb::upper(p.coefficients[j].get());
             }
             std::fill(multiplier_lanes_.begin(), multiplier_lanes_.end(), 1);
@@ -451,13 +501,14 @@ bool ResidueZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t
     mpz_neg(minus_b, minus_b);
     mpz_divexact(a, elements_[j].leading, a);
     return reduce_with_retries(
+        layout_.total_degree(lcm),
         [&] {
-            system_->residues(a, multiplier_lanes_.data(), false);
+            level().system->residues(a, multiplier_lanes_.data(), false);
             add_multiple(multiplier_lanes_.data(), lb::upper(a), mf.data(), f, 1,
-                         element_lanes_[i].rows.data(), elements_[i].term_bounds.data());
-            system_->residues(minus_b, multiplier_lanes_.data(), false);
+                         level().elements[i].rows.data(), elements_[i].term_bounds.data());
+            level().system->residues(minus_b, multiplier_lanes_.data(), false);
             add_multiple(multiplier_lanes_.data(), lb::upper(minus_b), mg.data(), g, 1,
-                         element_lanes_[j].rows.data(), elements_[j].term_bounds.data());
+                         level().elements[j].rows.data(), elements_[j].term_bounds.data());
         },
         counts);
 }

@@ -32,6 +32,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -55,16 +56,16 @@ class ResidueZeroReducer {
     // Thrown by the reductions when the values need more lanes than that; the reducer is then
     // left with nothing pending. (The constructor starts on initial_lanes() whatever it is.)
     struct TooWide {};
-    // The lanes the reducer starts on: room for twice the largest coefficient of the basis and
-    // 64 bits more (the reductions of katsura-9 stay within that, its 24 lanes; katsura-10
-    // takes 32), in multiples of 8, the width of the kernels. Values that outgrow them start
-    // their reduction again on more.
+    // The lanes the reducer starts on: room for the largest coefficient of the basis and 64
+    // bits more, in multiples of 8, the width of the kernels (katsura-9: 16, katsura-10: 24).
+    // Reductions whose values outgrow them start again on more.
     static std::size_t initial_lanes(const std::vector<BasisElement>& basis);
 
-    // `basis` is read, not copied: it must outlive the reducer and not change. `lanes` (a
-    // multiple of 8) overrides initial_lanes(basis), for the tests.
+    // `basis` is read, not copied: it must outlive the reducer and not change. For the tests:
+    // `lanes` (a multiple of 8) overrides initial_lanes(basis), and `learn` = false makes every
+    // reduction begin there, instead of where those of its degree were found to fit.
     ResidueZeroReducer(const MonomialLayout& layout, const std::vector<BasisElement>& basis,
-                       std::size_t lanes = 0);
+                       std::size_t lanes = 0, bool learn = true);
     ~ResidueZeroReducer();
     ResidueZeroReducer(const ResidueZeroReducer&) = delete;
     ResidueZeroReducer& operator=(const ResidueZeroReducer&) = delete;
@@ -105,6 +106,7 @@ class ResidueZeroReducer {
         mpz_t leading;                              // L > 0
         log_bound::Units leading_lower = 0;         // ≤ log L
         std::vector<log_bound::Units> term_bounds;  // ≥ log |c_j|, j ≥ 1
+        log_bound::Units largest_term_bound = log_bound::kZero;
     };
     // The same element on the current lanes.
     struct ElementLanes {
@@ -112,19 +114,35 @@ class ResidueZeroReducer {
         std::vector<std::uint32_t> rows;                // c_j for j ≥ 1, Montgomery form
         std::optional<ResidueSystem::Divisor> divisor;  // for L > 1
     };
-    // Thrown when a value would not fit the lanes, to start again on more.
-    struct LanesExhausted {};
+    // Thrown when a value would not fit the lanes, to start again on more: `needed` is the
+    // bound that did not fit.
+    struct LanesExhausted {
+        log_bound::Units needed;
+    };
+    // The basis and the values on one number of lanes. Reductions begin on the start level
+    // and move up when their values outgrow it.
+    struct Level {
+        std::unique_ptr<ResidueSystem> system;
+        std::vector<ElementLanes> elements;
+        std::vector<std::uint32_t> values;  // lanes per column, of V/Λ
+    };
+    // Where the reductions of one degree begin, and how many begun there had to move up.
+    struct Start {
+        std::size_t lanes = 0, begun = 0, outgrown = 0;
+    };
 
     std::uint32_t column(const std::uint64_t* m);
     // Index in rows_ of the row that reduces `column`, or kIrreducible; found on first use.
     std::int32_t row_of(std::uint32_t column);
-    std::uint32_t* value(std::uint32_t column) { return values_.data() + column * lanes(); }
-    std::size_t lanes() const { return system_->lanes(); }
+    Level& level() { return *active_; }
+    std::uint32_t* value(std::uint32_t column) { return level().values.data() + column * lanes(); }
+    std::size_t lanes() const { return active_->system->lanes(); }
     log_bound::Units true_bound(std::uint32_t column) const;
     void set_true_bound(std::uint32_t column, log_bound::Units bound);
 
-    // Sets up the lanes: `lanes` residues per integer, every column zero.
-    void use_lanes(std::size_t lanes);
+    std::unique_ptr<Level> make_level(std::size_t lanes) const;
+    // Makes the level of `lanes` lanes the one in use, building it first if need be.
+    void activate(std::size_t lanes);
     // Λ = 1, no column pending.
     void begin();
     // value[column(m·t_j)] += multiplier·c_j for the terms j ≥ from of `p`, whose coefficients
@@ -135,9 +153,10 @@ class ResidueZeroReducer {
     void push(std::uint32_t column);
     // Reduces what add_multiple loaded; leaves every column zero and the heap empty.
     bool reduce_loaded(ReductionCounts& counts);
-    // Runs `load` and the reduction, starting again on more lanes when the values outgrow them.
+    // Runs `load` and the reduction of a polynomial of degree `degree`, starting again on more
+    // lanes when the values outgrow them.
     template <typename Load>
-    bool reduce_with_retries(Load load, ReductionCounts& counts);
+    bool reduce_with_retries(std::uint32_t degree, Load load, ReductionCounts& counts);
     // Rebuilds the values of the pending columns and of `lc` in full, divides out their
     // content and makes their bounds exact.
     void rebuild_pending(std::uint32_t lc);
@@ -173,9 +192,11 @@ class ResidueZeroReducer {
     std::vector<std::uint64_t> rank_;
 
     // The lanes and everything held on them.
-    std::unique_ptr<ResidueSystem> system_;
-    std::vector<ElementLanes> element_lanes_;
-    std::vector<std::uint32_t> values_;  // lanes() residues per column, of V/Λ
+    std::map<std::size_t, std::unique_ptr<Level>> levels_;  // by lanes
+    Level* active_ = nullptr;
+    std::size_t first_lanes_ = 0;
+    bool learn_ = true;
+    std::map<std::uint32_t, Start> starts_;  // by degree
     // Column bounds are kept relative to `offset_`: the true bound of a pending column is
     // bound_ + offset_, so multiplying every pending V by a adds log a to offset_ alone. A
     // column not pending is zero, with bound_ = kZero (which stays far below any real bound
