@@ -7,6 +7,8 @@
 
 #include <immintrin.h>
 
+#include <flint/ulong_extras.h>
+
 // GCC 12 sees the _mm512_undefined_epi32() inside AVX-512 intrinsics as uninitialized reads
 // (GCC bug 105593); the intrinsics are correct.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
@@ -15,18 +17,6 @@
 namespace locus::algebra::detail {
 
 namespace {
-
-bool is_prime(std::uint32_t n) {
-    if (n < 2 || n % 2 == 0) {
-        return n == 2;
-    }
-    for (std::uint32_t d = 3; static_cast<std::uint64_t>(d) * d <= n; d += 2) {
-        if (n % d == 0) {
-            return false;
-        }
-    }
-    return true;
-}
 
 // x·y·2^-32 mod p for x·y < 2^32·p (one operand below p suffices).
 inline std::uint32_t montgomery(std::uint32_t x, std::uint32_t y, std::uint32_t p,
@@ -52,15 +42,24 @@ void multiply_portable(std::uint32_t* out, const std::uint32_t* x, const std::ui
     }
 }
 
+// x·b mod p by Shoup's method, for b < p and b_quotient = ⌊b·2^32/p⌋: the quotient estimate
+// ⌊x·b_quotient/2^32⌋ is at most one short, so the remainder, taken modulo 2^32, is below 2p.
+inline std::uint32_t shoup(std::uint32_t x, std::uint32_t b, std::uint32_t b_quotient,
+                           std::uint32_t p) {
+    const auto q = static_cast<std::uint32_t>((static_cast<std::uint64_t>(x) * b_quotient) >> 32);
+    const std::uint32_t r = x * b - q * p;
+    return r >= p ? r - p : r;
+}
+
 void add_scaled_rows_portable(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
                               const std::uint32_t* rows, const std::uint32_t* b,
-                              const std::uint32_t* p, const std::uint32_t* ninv,
+                              const std::uint32_t* b_quotients, const std::uint32_t* p,
                               std::size_t lanes) {
     for (std::size_t t = 0; t < n; ++t) {
         std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * lanes;
         const std::uint32_t* row = rows + t * lanes;
         for (std::size_t l = 0; l < lanes; ++l) {
-            v[l] = add_mod(v[l], montgomery(b[l], row[l], p[l], ninv[l]), p[l]);
+            v[l] = add_mod(v[l], shoup(row[l], b[l], b_quotients[l], p[l]), p[l]);
         }
     }
 }
@@ -116,17 +115,26 @@ LOCUS_AVX2 void multiply_avx2(std::uint32_t* out, const std::uint32_t* x, const 
     }
 }
 
+LOCUS_AVX2 inline __m256i shoup8(__m256i x, __m256i b, __m256i b_quotient, __m256i b_quotient_odd,
+                                 __m256i p) {
+    const __m256i qe = _mm256_srli_epi64(_mm256_mul_epu32(x, b_quotient), 32);
+    const __m256i qo = _mm256_mul_epu32(_mm256_srli_epi64(x, 32), b_quotient_odd);
+    const __m256i q = _mm256_blend_epi32(qe, qo, 0xAA);
+    const __m256i r = _mm256_sub_epi32(_mm256_mullo_epi32(x, b), _mm256_mullo_epi32(q, p));
+    return _mm256_min_epu32(r, _mm256_sub_epi32(r, p));
+}
+
 LOCUS_AVX2 void add_scaled_rows_avx2(std::uint32_t* table, const std::uint32_t* columns,
                                      std::size_t n, const std::uint32_t* rows,
-                                     const std::uint32_t* b, const std::uint32_t* p,
-                                     const std::uint32_t* ninv, std::size_t lanes) {
+                                     const std::uint32_t* b, const std::uint32_t* b_quotients,
+                                     const std::uint32_t* p, std::size_t lanes) {
     for (std::size_t t = 0; t < n; ++t) {
         std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * lanes;
         const std::uint32_t* row = rows + t * lanes;
         for (std::size_t l = 0; l < lanes; l += 8) {
-            const __m256i pv = load8(p + l);
-            const __m256i product = montgomery8(load8(b + l), load8(row + l), pv,
-                                                _mm256_srli_epi64(pv, 32), load8(ninv + l));
+            const __m256i pv = load8(p + l), bq = load8(b_quotients + l);
+            const __m256i product =
+                shoup8(load8(row + l), load8(b + l), bq, _mm256_srli_epi64(bq, 32), pv);
             store8(v + l, add_mod8(load8(v + l), product, pv));
         }
     }
@@ -189,41 +197,51 @@ LOCUS_AVX512 void multiply_avx512(std::uint32_t* out, const std::uint32_t* x,
     }
 }
 
+LOCUS_AVX512 inline __m512i shoup16(__m512i x, __m512i b, __m512i b_quotient,
+                                    __m512i b_quotient_odd, __m512i p) {
+    const __m512i qe = _mm512_srli_epi64(_mm512_mul_epu32(x, b_quotient), 32);
+    const __m512i qo = _mm512_mul_epu32(_mm512_srli_epi64(x, 32), b_quotient_odd);
+    const __m512i q = _mm512_mask_blend_epi32(0xAAAA, qe, qo);
+    const __m512i r = _mm512_sub_epi32(_mm512_mullo_epi32(x, b), _mm512_mullo_epi32(q, p));
+    return _mm512_min_epu32(r, _mm512_sub_epi32(r, p));
+}
+
 // The lane count as a template parameter for the common widths: the loop over blocks unrolls
-// and the primes, their inverses and the multiplier stay in registers across the terms.
+// and the primes and the multiplier stay in registers across the terms.
 template <std::size_t kLanes>
 LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::uint32_t* columns,
                                                std::size_t n, const std::uint32_t* rows,
-                                               const std::uint32_t* b, const std::uint32_t* p,
-                                               const std::uint32_t* ninv) {
+                                               const std::uint32_t* b,
+                                               const std::uint32_t* b_quotients,
+                                               const std::uint32_t* p) {
     constexpr std::size_t kBlocks = kLanes / 16;
     constexpr bool kTail = kLanes % 16 != 0;
-    __m512i bv[kBlocks + 1], pv[kBlocks + 1], p_odd[kBlocks + 1], nv[kBlocks + 1];
+    __m512i bv[kBlocks + 1], bq[kBlocks + 1], bq_odd[kBlocks + 1], pv[kBlocks + 1];
     for (std::size_t k = 0; k < kBlocks; ++k) {
         bv[k] = _mm512_loadu_si512(b + 16 * k);
+        bq[k] = _mm512_loadu_si512(b_quotients + 16 * k);
+        bq_odd[k] = _mm512_srli_epi64(bq[k], 32);
         pv[k] = _mm512_loadu_si512(p + 16 * k);
-        p_odd[k] = _mm512_srli_epi64(pv[k], 32);
-        nv[k] = _mm512_loadu_si512(ninv + 16 * k);
     }
-    __m256i b_tail{}, p_tail{}, p_odd_tail{}, n_tail{};
+    __m256i b_tail{}, bq_tail{}, bq_odd_tail{}, p_tail{};
     if constexpr (kTail) {
         b_tail = load8(b + 16 * kBlocks);
+        bq_tail = load8(b_quotients + 16 * kBlocks);
+        bq_odd_tail = _mm256_srli_epi64(bq_tail, 32);
         p_tail = load8(p + 16 * kBlocks);
-        p_odd_tail = _mm256_srli_epi64(p_tail, 32);
-        n_tail = load8(ninv + 16 * kBlocks);
     }
     for (std::size_t t = 0; t < n; ++t) {
         std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * kLanes;
         const std::uint32_t* row = rows + t * kLanes;
         for (std::size_t k = 0; k < kBlocks; ++k) {
             const __m512i product =
-                montgomery16(bv[k], _mm512_loadu_si512(row + 16 * k), pv[k], p_odd[k], nv[k]);
+                shoup16(_mm512_loadu_si512(row + 16 * k), bv[k], bq[k], bq_odd[k], pv[k]);
             _mm512_storeu_si512(v + 16 * k,
                                 add_mod16(_mm512_loadu_si512(v + 16 * k), product, pv[k]));
         }
         if constexpr (kTail) {
             const __m256i product =
-                montgomery8(b_tail, load8(row + 16 * kBlocks), p_tail, p_odd_tail, n_tail);
+                shoup8(load8(row + 16 * kBlocks), b_tail, bq_tail, bq_odd_tail, p_tail);
             store8(v + 16 * kBlocks, add_mod8(load8(v + 16 * kBlocks), product, p_tail));
         }
     }
@@ -231,25 +249,25 @@ LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::
 
 LOCUS_AVX512 void add_scaled_rows_avx512(std::uint32_t* table, const std::uint32_t* columns,
                                          std::size_t n, const std::uint32_t* rows,
-                                         const std::uint32_t* b, const std::uint32_t* p,
-                                         const std::uint32_t* ninv, std::size_t lanes) {
+                                         const std::uint32_t* b, const std::uint32_t* b_quotients,
+                                         const std::uint32_t* p, std::size_t lanes) {
     switch (lanes) {
     case 8:
-        return add_scaled_rows_avx512_fixed<8>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<8>(table, columns, n, rows, b, b_quotients, p);
     case 16:
-        return add_scaled_rows_avx512_fixed<16>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<16>(table, columns, n, rows, b, b_quotients, p);
     case 24:
-        return add_scaled_rows_avx512_fixed<24>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<24>(table, columns, n, rows, b, b_quotients, p);
     case 32:
-        return add_scaled_rows_avx512_fixed<32>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<32>(table, columns, n, rows, b, b_quotients, p);
     case 40:
-        return add_scaled_rows_avx512_fixed<40>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<40>(table, columns, n, rows, b, b_quotients, p);
     case 48:
-        return add_scaled_rows_avx512_fixed<48>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<48>(table, columns, n, rows, b, b_quotients, p);
     case 56:
-        return add_scaled_rows_avx512_fixed<56>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<56>(table, columns, n, rows, b, b_quotients, p);
     case 64:
-        return add_scaled_rows_avx512_fixed<64>(table, columns, n, rows, b, p, ninv);
+        return add_scaled_rows_avx512_fixed<64>(table, columns, n, rows, b, b_quotients, p);
     default:
         break;
     }
@@ -258,9 +276,9 @@ LOCUS_AVX512 void add_scaled_rows_avx512(std::uint32_t* table, const std::uint32
         const std::uint32_t* row = rows + t * lanes;
         for (std::size_t l = 0; l < lanes; l += 16) {
             const __mmask16 mask = block_mask(l, lanes);
-            const __m512i pv = load16(p + l, mask);
-            const __m512i product = montgomery16(load16(b + l, mask), load16(row + l, mask), pv,
-                                                 _mm512_srli_epi64(pv, 32), load16(ninv + l, mask));
+            const __m512i pv = load16(p + l, mask), bq = load16(b_quotients + l, mask);
+            const __m512i product = shoup16(load16(row + l, mask), load16(b + l, mask), bq,
+                                            _mm512_srli_epi64(bq, 32), pv);
             _mm512_mask_storeu_epi32(v + l, mask, add_mod16(load16(v + l, mask), product, pv));
         }
     }
@@ -327,7 +345,7 @@ LanePrimes::LanePrimes(std::size_t lanes, const std::function<bool(std::uint32_t
         throw std::invalid_argument("LanePrimes: the number of lanes must be a multiple of 8");
     }
     for (std::uint32_t n = (1u << 31) - 1; primes_.size() < lanes; n -= 2) {
-        if (is_prime(n) && usable(n)) {
+        if (n_is_prime(n) != 0 && usable(n)) {
             primes_.push_back(n);
             // Newton's iteration doubles the correct low bits of p⁻¹ mod 2^32: 1 → 32 in 5 steps.
             std::uint32_t inverse = 1;
@@ -335,6 +353,7 @@ LanePrimes::LanePrimes(std::size_t lanes, const std::function<bool(std::uint32_t
                 inverse *= 2 - n * inverse;
             }
             neg_inverses_.push_back(0u - inverse);
+            reciprocals_.push_back(4294967296.0 / n);
         }
     }
 }
@@ -369,9 +388,23 @@ bool is_zero(const std::uint32_t* x, std::size_t lanes) {
     return any == 0;
 }
 
+void shoup_quotients(std::uint32_t* out, const std::uint32_t* b, const LanePrimes& primes) {
+    const std::uint32_t* p = primes.primes();
+    const double* reciprocal = primes.reciprocals();
+    for (std::size_t l = 0; l < primes.size(); ++l) {
+        // The estimate from 2^32/p in floating point is off by at most one either way.
+        const std::uint64_t numerator = static_cast<std::uint64_t>(b[l]) << 32;
+        auto q = static_cast<std::uint64_t>(static_cast<double>(b[l]) * reciprocal[l]);
+        const auto r = static_cast<std::int64_t>(numerator - q * p[l]);
+        q = r < 0 ? q - 1 : (r >= static_cast<std::int64_t>(p[l]) ? q + 1 : q);
+        out[l] = static_cast<std::uint32_t>(q);
+    }
+}
+
 void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
-                     const std::uint32_t* rows, const std::uint32_t* b, const LanePrimes& primes) {
-    kernels().add_scaled_rows(table, columns, n, rows, b, primes.primes(), primes.neg_inverses(),
+                     const std::uint32_t* rows, const std::uint32_t* b,
+                     const std::uint32_t* b_quotients, const LanePrimes& primes) {
+    kernels().add_scaled_rows(table, columns, n, rows, b, b_quotients, primes.primes(),
                               primes.size());
 }
 

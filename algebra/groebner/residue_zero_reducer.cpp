@@ -101,7 +101,7 @@ std::unique_ptr<ResidueZeroReducer::Level> ResidueZeroReducer::make_level(std::s
         const IntegerPolynomial& g = basis_[k].poly;
         el.rows.resize(g.size() > 1 ? (g.size() - 1) * lanes : 0);
         for (std::size_t j = 1; j < g.size(); ++j) {
-            system.residues(g.coefficients[j].get(), el.rows.data() + (j - 1) * lanes, true);
+            system.residues(g.coefficients[j].get(), el.rows.data() + (j - 1) * lanes, false);
         }
         if (mpz_cmp_ui(e.leading, 1) != 0) {
             el.divisor = system.divisor(e.leading);
@@ -123,6 +123,7 @@ void ResidueZeroReducer::activate(std::size_t lanes) {
     multiplier_lanes_.resize(lanes);
     digits_.resize(lanes);
     factor_.resize(lanes);
+    quotients_.resize(lanes);
     statistics_.lanes = std::max(statistics_.lanes, lanes);
 }
 
@@ -227,8 +228,9 @@ void ResidueZeroReducer::add_multiple(const std::uint32_t* multiplier, lb::Units
         touched_.push_back(c);
         touched_bounds_.push_back(bound);
     }
+    lanes::shoup_quotients(quotients_.data(), multiplier, level().system->primes());
     lanes::add_scaled_rows(level().values.data(), touched_.data(), touched_.size(), rows,
-                           multiplier, level().system->primes());
+                           multiplier, quotients_.data(), level().system->primes());
     for (std::size_t t = 0; t < touched_.size(); ++t) {
         set_true_bound(touched_[t], touched_bounds_[t]);
         push(touched_[t]);
@@ -385,8 +387,9 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
             level().system->residues(cofactor_, factor_.data(), true);
             scale_lambda(factor_.data());
         }
+        lanes::shoup_quotients(quotients_.data(), multiplier_lanes_.data(), primes);
         lanes::add_scaled_rows(level().values.data(), columns, length, el.rows.data(),
-                               multiplier_lanes_.data(), primes);
+                               multiplier_lanes_.data(), quotients_.data(), primes);
         {
             // Locals throughout: bound_ and the members alias as int64s.
             lb::Units* bound = bound_.data();

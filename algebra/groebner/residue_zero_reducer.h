@@ -146,7 +146,7 @@ class ResidueZeroReducer {
     // Λ = 1, no column pending.
     void begin();
     // value[column(m·t_j)] += multiplier·c_j for the terms j ≥ from of `p`, whose coefficients
-    // are `rows` (Montgomery form) with bounds `bounds`; `multiplier` holds plain residues.
+    // are `rows` with bounds `bounds`.
     void add_multiple(const std::uint32_t* multiplier, log_bound::Units multiplier_bound,
                       const std::uint64_t* m, const IntegerPolynomial& p, std::size_t from,
                       const std::uint32_t* rows, const log_bound::Units* bounds);
@@ -208,7 +208,7 @@ class ResidueZeroReducer {
     std::vector<std::uint32_t> lambda_digits_;           // Λ·digit_factors(), Montgomery form
 
     // Scratch.
-    std::vector<std::uint32_t> multiplier_lanes_, digits_, factor_;
+    std::vector<std::uint32_t> multiplier_lanes_, quotients_, digits_, factor_;
     std::vector<std::uint32_t> load_rows_;
     std::vector<log_bound::Units> load_bounds_;
     std::vector<mp_limb_t> remainder_;

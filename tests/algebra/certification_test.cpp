@@ -1,5 +1,6 @@
 // The certification's arithmetic (issue 7): the residue lanes against scalar modular arithmetic
-// done another way (64-bit products and a modular inverse of 2^32, no Montgomery reduction);
+// done another way (64-bit products and remainders, a modular inverse of 2^32 in place of
+// Montgomery's reduction);
 // the size bounds against exact powers; the residue system's reconstructions and remainders
 // against GMP; and the residue reducer against the GMP reducer, which must make the same
 // steps on the same integers and reach the same verdicts, on bases from the bench suite, on
@@ -81,13 +82,19 @@ TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
             std::vector<std::uint32_t> expected = table;
             for (std::size_t t = 0; t < 20; ++t) {
                 for (std::size_t l = 0; l < width; ++l) {
-                    const std::uint32_t p = primes.prime(l);
+                    const std::uint64_t p = primes.prime(l);
                     std::uint32_t& v = expected[columns[t] * width + l];
                     v = static_cast<std::uint32_t>(
-                        (v + reference_montgomery(b[l], rows[t * width + l], p)) % p);
+                        (v + static_cast<std::uint64_t>(b[l]) * rows[t * width + l] % p) % p);
                 }
             }
-            lanes::add_scaled_rows(table.data(), columns.data(), 20, rows.data(), b.data(), primes);
+            std::vector<std::uint32_t> quotients(width);
+            lanes::shoup_quotients(quotients.data(), b.data(), primes);
+            for (std::size_t l = 0; l < width; ++l) {
+                ASSERT_EQ(quotients[l], (static_cast<std::uint64_t>(b[l]) << 32) / primes.prime(l));
+            }
+            lanes::add_scaled_rows(table.data(), columns.data(), 20, rows.data(), b.data(),
+                                   quotients.data(), primes);
             ASSERT_EQ(table, expected) << kernel << " lanes " << width;
             // Digits of any 32 bits, powers below p.
             std::vector<std::uint32_t> halves(6), powers(6 * width);
