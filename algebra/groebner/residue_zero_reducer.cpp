@@ -476,7 +476,7 @@ bool ResidueZeroReducer::reduces_to_zero(const IntegerPolynomial& p, ReductionCo
             load_bounds_.resize(p.size());
             for (std::size_t j = 0; j < p.size(); ++j) {
                 level().system->residues(p.coefficients[j].get(), load_rows_.data() + j * width,
-                                         true);
+                                         false);
                 load_bounds_[j] = lb::upper(p.coefficients[j].get());
             }
             std::fill(multiplier_lanes_.begin(), multiplier_lanes_.end(), 1);
