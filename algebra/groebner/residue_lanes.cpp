@@ -346,16 +346,35 @@ LanePrimes::LanePrimes(std::size_t lanes, const std::function<bool(std::uint32_t
     }
     for (std::uint32_t n = (1u << 31) - 1; primes_.size() < lanes; n -= 2) {
         if (n_is_prime(n) != 0 && usable(n)) {
-            primes_.push_back(n);
-            // Newton's iteration doubles the correct low bits of p⁻¹ mod 2^32: 1 → 32 in 5 steps.
-            std::uint32_t inverse = 1;
-            for (int i = 0; i < 5; ++i) {
-                inverse *= 2 - n * inverse;
-            }
-            neg_inverses_.push_back(0u - inverse);
-            reciprocals_.push_back(4294967296.0 / n);
+            add(n);
         }
     }
+}
+
+LanePrimes::LanePrimes(std::span<const std::uint32_t> primes) {
+    if (primes.empty()) {
+        throw std::invalid_argument("LanePrimes: no primes");
+    }
+    for (const std::uint32_t p : primes) {
+        if (p < 3 || p >= (1u << 31) || n_is_prime(p) == 0) {
+            throw std::invalid_argument("LanePrimes: not an odd prime below 2^31");
+        }
+        add(p);
+    }
+    while (primes_.size() % 8 != 0) {
+        add(primes.back());
+    }
+}
+
+void LanePrimes::add(std::uint32_t p) {
+    primes_.push_back(p);
+    // Newton's iteration doubles the correct low bits of p⁻¹ mod 2^32: 1 → 32 in 5 steps.
+    std::uint32_t inverse = 1;
+    for (int i = 0; i < 5; ++i) {
+        inverse *= 2 - p * inverse;
+    }
+    neg_inverses_.push_back(0u - inverse);
+    reciprocals_.push_back(4294967296.0 / p);
 }
 
 std::uint32_t LanePrimes::multiply(std::size_t lane, std::uint32_t x, std::uint32_t y) const {

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ class LanePrimes {
     // The `lanes` largest primes below 2^31 for which `usable` holds, in descending order;
     // `lanes` is a positive multiple of 8.
     LanePrimes(std::size_t lanes, const std::function<bool(std::uint32_t)>& usable);
+    // These odd primes below 2^31, in this order, the last repeated up to a multiple of 8.
+    explicit LanePrimes(std::span<const std::uint32_t> primes);
 
     std::size_t size() const { return primes_.size(); }
     const std::uint32_t* primes() const { return primes_.data(); }
@@ -38,6 +41,8 @@ class LanePrimes {
     std::uint32_t to_montgomery(std::size_t lane, std::uint32_t x) const;
 
   private:
+    void add(std::uint32_t p);
+
     std::vector<std::uint32_t> primes_, neg_inverses_;  // −p⁻¹ mod 2^32
     std::vector<double> reciprocals_;
 };

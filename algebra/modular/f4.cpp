@@ -104,6 +104,11 @@ class F4Engine {
                 return std::nullopt;
             }
         }
+        // The recorded last matrix holds only for the recorded supports.
+        if (!trace.final_elements.empty() &&
+            std::find(fits_trace_.begin(), fits_trace_.end(), 0) != fits_trace_.end()) {
+            return std::nullopt;
+        }
         return reduced_basis();
     }
 
@@ -614,49 +619,76 @@ class F4Engine {
     }
 
     // The monic reduced basis: a minimal set of leading monomials, every tail reduced by one
-    // more Macaulay matrix.
+    // more Macaulay matrix. A replay takes that matrix from the trace: its leading monomials
+    // and supports are the recorded ones, so the symbolic preprocessing would be too.
     std::vector<ModularPolynomial> reduced_basis() {
-        std::vector<std::size_t> minimal;
-        for (std::size_t g = 0; g < basis_.size(); ++g) {
-            bool divisible = false;
-            for (std::size_t h = 0; h < basis_.size() && !divisible; ++h) {
-                if (h == g || !layout_.divides(lead(h), lead(g))) {
-                    continue;
-                }
-                // Equal leading monomials: keep the first.
-                divisible = !layout_.equal(lead(h), lead(g)) || h < g;
-            }
-            if (!divisible) {
-                minimal.push_back(g);
-            }
-        }
-        for (Element& e : basis_) {
-            e.redundant = true;
-        }
-        for (std::size_t g : minimal) {
-            basis_[g].redundant = false;
-        }
-        std::vector<RowSpec> reducers, rows;
-        std::vector<std::int64_t> pivot_of_monomial(table_.size(), -1);
-        std::vector<char> seen(table_.size(), 0);
-        std::vector<std::uint64_t> one(words_, 0);
-        for (std::size_t g : minimal) {
-            RowSpec row = make_row(g, one.data());
-            pivot_of_monomial.resize(table_.size(), -1);
-            pivot_of_monomial[row.monomials.front()] = static_cast<std::int64_t>(reducers.size());
-            reducers.push_back(std::move(row));
-        }
-        seen.resize(table_.size(), 0);
-        preprocess(reducers, rows, pivot_of_monomial, seen);
-        std::vector<std::uint32_t> column_of;
-        const std::vector<std::uint32_t> columns = order_columns(seen, column_of);
+        std::vector<std::uint32_t> minimal;
         std::vector<SparseRow> pivots;
-        std::vector<std::int64_t> pivot_of_column(columns.size(), -1);
-        for (std::size_t r = 0; r < reducers.size(); ++r) {
-            pivots.push_back(to_sparse(reducers[r], column_of));
-            pivot_of_column[pivots.back().columns.front()] = static_cast<std::int64_t>(r);
+        std::vector<std::uint64_t> column_monomials;
+        if (replaying_ != nullptr && !replaying_->final_elements.empty()) {
+            const F4Trace::Step& final_step = replaying_->final_step;
+            minimal = replaying_->final_elements;
+            for (const F4Trace::Row& r : final_step.reducers) {
+                pivots.push_back(SparseRow{r.columns, basis_[r.element].poly.coefficients});
+            }
+            column_monomials = final_step.column_monomials;
+        } else {
+            for (std::size_t g = 0; g < basis_.size(); ++g) {
+                bool divisible = false;
+                for (std::size_t h = 0; h < basis_.size() && !divisible; ++h) {
+                    if (h == g || !layout_.divides(lead(h), lead(g))) {
+                        continue;
+                    }
+                    // Equal leading monomials: keep the first.
+                    divisible = !layout_.equal(lead(h), lead(g)) || h < g;
+                }
+                if (!divisible) {
+                    minimal.push_back(static_cast<std::uint32_t>(g));
+                }
+            }
+            for (Element& e : basis_) {
+                e.redundant = true;
+            }
+            for (std::size_t g : minimal) {
+                basis_[g].redundant = false;
+            }
+            std::vector<RowSpec> reducers, rows;
+            std::vector<std::int64_t> pivot_of_monomial(table_.size(), -1);
+            std::vector<char> seen(table_.size(), 0);
+            std::vector<std::uint64_t> one(words_, 0);
+            for (std::size_t g : minimal) {
+                RowSpec row = make_row(g, one.data());
+                pivot_of_monomial.resize(table_.size(), -1);
+                pivot_of_monomial[row.monomials.front()] =
+                    static_cast<std::int64_t>(reducers.size());
+                reducers.push_back(std::move(row));
+            }
+            seen.resize(table_.size(), 0);
+            preprocess(reducers, rows, pivot_of_monomial, seen);
+            std::vector<std::uint32_t> column_of;
+            const std::vector<std::uint32_t> columns = order_columns(seen, column_of);
+            for (const std::uint32_t m : columns) {
+                column_monomials.insert(column_monomials.end(), table_.at(m),
+                                        table_.at(m) + words_);
+            }
+            for (const RowSpec& reducer : reducers) {
+                pivots.push_back(to_sparse(reducer, column_of));
+            }
+            if (record_ != nullptr) {
+                record_->final_elements = minimal;
+                record_->final_step = {};
+                for (std::size_t r = 0; r < reducers.size(); ++r) {
+                    record_->final_step.reducers.push_back(
+                        {static_cast<std::uint32_t>(reducers[r].element), pivots[r].columns});
+                }
+                record_->final_step.column_monomials = column_monomials;
+            }
         }
-        std::vector<std::uint64_t> acc(columns.size(), 0);
+        std::vector<std::int64_t> pivot_of_column(column_monomials.size() / words_, -1);
+        for (std::size_t r = 0; r < pivots.size(); ++r) {
+            pivot_of_column[pivots[r].columns.front()] = static_cast<std::int64_t>(r);
+        }
+        std::vector<std::uint64_t> acc(pivot_of_column.size(), 0);
         std::vector<ModularPolynomial> out;
         for (std::size_t k = 0; k < minimal.size(); ++k) {
             check_deadline();
@@ -669,11 +701,11 @@ class F4Engine {
                                        : SparseRow{};
             ModularPolynomial poly;
             poly.coefficients.push_back(1);
-            const std::uint64_t* leading = table_.at(columns[row.columns.front()]);
+            const std::uint64_t* leading = column_monomials.data() + row.columns.front() * words_;
             poly.monomials.assign(leading, leading + words_);
             for (std::size_t i = 0; i < tail.columns.size(); ++i) {
                 poly.coefficients.push_back(tail.coefficients[i]);
-                const std::uint64_t* m = table_.at(columns[tail.columns[i]]);
+                const std::uint64_t* m = column_monomials.data() + tail.columns[i] * words_;
                 poly.monomials.insert(poly.monomials.end(), m, m + words_);
             }
             out.push_back(std::move(poly));

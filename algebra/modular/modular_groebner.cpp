@@ -1,6 +1,7 @@
 #include "algebra/modular/modular_groebner.h"
 
 #include <algorithm>
+#include <deque>
 #include <random>
 
 #include <flint/fmpq.h>
@@ -293,45 +294,107 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
     PrimeSequence primes(options.primes);
     bool tracing = options.trace;
     std::optional<modular::F4Trace> trace;  // of the first prime F4 ran on
-    while (s.primes_used.size() < options.max_primes) {
-        const std::uint32_t p = primes.next();
-        s.primes_used.push_back(p);
-        const PrimeField field{p};
-        std::vector<ModularPolynomial> reduced;
-        bool usable = true;
-        for (const Polynomial& f : inputs) {
-            // A prime that divides a leading coefficient changes the input's leading monomials
-            // (and a product of two such primes could make both agree on a wrong ideal).
-            std::optional<ModularPolynomial> g = modular::reduce_modulo(f, field);
-            if (!g || fmpz_fdiv_ui(fmpq_numref(f.leading_coefficient().get()), p) == 0) {
-                usable = false;
-                break;
+    // Primes whose inputs are reduced and, once a trace exists, whose replays are done: the
+    // replays run in batches on lanes, one residue a prime (f4_replay_lanes), 3.5–4.5 times
+    // faster than one prime at a time (cyclic-7: 16 replays 0.30 → 0.07 s). A batch may hold
+    // primes the lift turns out not to need; a first batch of 8 keeps that small.
+    struct Prepared {
+        std::uint32_t p;
+        std::vector<ModularPolynomial> reduced, reduced_grevlex;
+        bool replay_tried = false;
+        std::optional<std::vector<ModularPolynomial>> replayed;
+    };
+    std::deque<Prepared> ready;
+    std::size_t batches = 0;
+    // The next prime that divides no leading coefficient or denominator of the inputs, with
+    // the inputs modulo it; the others are counted as unlucky.
+    auto next_usable = [&]() -> std::optional<Prepared> {
+        while (s.primes_used.size() + ready.size() < options.max_primes) {
+            const std::uint32_t p = primes.next();
+            const PrimeField field{p};
+            Prepared item{p, {}, {}, false, std::nullopt};
+            bool usable = true;
+            for (const Polynomial& f : inputs) {
+                // A prime that divides a leading coefficient changes the input's leading
+                // monomials (and a product of two such primes could make both agree on a
+                // wrong ideal).
+                std::optional<ModularPolynomial> g = modular::reduce_modulo(f, field);
+                if (!g || fmpz_fdiv_ui(fmpq_numref(f.leading_coefficient().get()), p) == 0) {
+                    usable = false;
+                    break;
+                }
+                item.reduced.push_back(std::move(*g));
             }
-            reduced.push_back(std::move(*g));
+            if (!usable) {
+                s.primes_used.push_back(p);
+                ++s.unlucky_primes;
+                continue;
+            }
+            if (via_grevlex) {
+                for (const Polynomial& f : grevlex_inputs) {
+                    item.reduced_grevlex.push_back(*modular::reduce_modulo(f, field));
+                }
+            }
+            return item;
         }
-        if (!usable) {
-            ++s.unlucky_primes;
-            continue;
-        }
-        const auto f4_start = Clock::now();
-        modular::F4Stats f4_stats;
+        return std::nullopt;
+    };
+    while (s.primes_used.size() < options.max_primes) {
         // Without certification the prime that confirms a candidate runs F4 afresh, so that
         // a replay of an unlucky first prime cannot confirm its own lift.
         const bool confirming =
             !options.certify && std::any_of(groups.begin(), groups.end(),
                                             [](const Group& g) { return g.candidate.has_value(); });
-        auto run_f4 = [&](const std::vector<ModularPolynomial>& polys, const MonomialLayout& l) {
-            if (tracing && trace && !confirming) {
-                const auto replay_start = Clock::now();
-                std::optional<std::vector<ModularPolynomial>> replayed =
-                    modular::f4_replay(*trace, polys, l, field, f4_options, &f4_stats);
-                if (replayed) {
-                    ++s.replayed;
-                    s.replay_seconds += seconds_since(replay_start);
-                    return std::move(*replayed);
+        if (ready.empty()) {
+            const std::size_t batch = tracing && trace && !confirming ? (batches == 0 ? 8 : 16) : 1;
+            while (ready.size() < batch) {
+                std::optional<Prepared> item = next_usable();
+                if (!item) {
+                    break;
                 }
-                ++s.replays_refused;
-                f4_stats = {};
+                ready.push_back(std::move(*item));
+            }
+            if (ready.empty()) {
+                break;
+            }
+            if (batch > 1) {
+                ++batches;
+                const auto replay_start = Clock::now();
+                std::vector<std::uint32_t> batch_primes;
+                std::vector<std::vector<ModularPolynomial>> batch_inputs;
+                for (const Prepared& item : ready) {
+                    batch_primes.push_back(item.p);
+                    batch_inputs.push_back(via_grevlex ? item.reduced_grevlex : item.reduced);
+                }
+                auto replayed = modular::f4_replay_lanes(
+                    *trace, batch_inputs, batch_primes,
+                    via_grevlex ? grevlex_ring->layout() : layout, f4_options);
+                for (std::size_t i = 0; i < ready.size(); ++i) {
+                    ready[i].replay_tried = true;
+                    ready[i].replayed = std::move(replayed[i]);
+                }
+                const double seconds = seconds_since(replay_start);
+                s.modular_seconds += seconds;
+                s.replay_seconds += seconds;
+            }
+        }
+        Prepared item = std::move(ready.front());
+        ready.pop_front();
+        const std::uint32_t p = item.p;
+        s.primes_used.push_back(p);
+        const PrimeField field{p};
+        const std::vector<ModularPolynomial>& reduced = item.reduced;
+        const auto f4_start = Clock::now();
+        modular::F4Stats f4_stats;
+        auto run_f4 = [&](const std::vector<ModularPolynomial>& polys, const MonomialLayout& l) {
+            if (item.replay_tried) {
+                if (item.replayed && !confirming) {
+                    ++s.replayed;
+                    return std::move(*item.replayed);
+                }
+                if (!item.replayed) {
+                    ++s.replays_refused;
+                }
             }
             if (tracing && !trace) {
                 trace.emplace();
@@ -341,15 +404,12 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         };
         std::optional<std::vector<ModularPolynomial>> converted;
         if (via_grevlex) {
-            std::vector<ModularPolynomial> reduced_grevlex;
-            for (const Polynomial& f : grevlex_inputs) {
-                reduced_grevlex.push_back(*modular::reduce_modulo(f, field));
-            }
             converted =
-                modular::fglm(run_f4(reduced_grevlex, grevlex_ring->layout()),
+                modular::fglm(run_f4(item.reduced_grevlex, grevlex_ring->layout()),
                               grevlex_ring->layout(), layout, field, 3000, options.deadline);
             if (!converted && trace) {
                 trace.reset();  // recorded under grevlex: no use under the ring's own order
+                ready.clear();  // nor are the replays made from it
             }
             via_grevlex = converted.has_value();
             if (converted) {
@@ -401,6 +461,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                         tracing = false;
                         trace.reset();
                         groups.clear();
+                        ready.clear();
                     } else {
                         group->candidate.reset();
                     }

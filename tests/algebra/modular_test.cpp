@@ -283,6 +283,48 @@ TEST(Modular, ReplayOfTheFirstPrimesTraceEqualsF4OnAnotherPrime) {
     }
 }
 
+// Eleven primes below 2^31 from `start` down (not a multiple of 8: the last lanes repeat one).
+std::vector<std::uint32_t> primes_below(std::uint32_t start, std::size_t count) {
+    std::vector<std::uint32_t> primes;
+    for (std::uint32_t p = modular::previous_prime(start); primes.size() < count;
+         p = modular::previous_prime(p)) {
+        primes.push_back(p);
+    }
+    return primes;
+}
+
+TEST(Modular, ReplayOnLanesEqualsTheReplayOfEachPrime) {
+    // The last: a basis without a single F4 step (its only pair is coprime), whose replay is
+    // the final matrix alone (it once wrote past empty scratch vectors).
+    for (const std::string name : {"cyclic5", "katsura6", "eco6", "noon4", "cyclic6", "steps0"}) {
+        const IdealFile ideal = parse_ideal_file(
+            name == "steps0"
+                ? "vars: x,y\norder: grevlex\nx^3-y^2+x\ny^2-1\n"
+                : test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        const MonomialLayout& layout = ideal.ring->layout();
+        modular::F4Trace trace;
+        modular::f4(modulo(ideal.generators, 2147483647u), layout, {2147483647u}, {}, nullptr,
+                    &trace);
+        const std::vector<std::uint32_t> primes = primes_below(2000000000u, 11);
+        std::vector<std::vector<modular::ModularPolynomial>> inputs;
+        for (const std::uint32_t p : primes) {
+            inputs.push_back(modulo(ideal.generators, p));
+        }
+        const auto batch = modular::f4_replay_lanes(trace, inputs, primes, layout);
+        ASSERT_EQ(batch.size(), primes.size());
+        for (std::size_t i = 0; i < primes.size(); ++i) {
+            const auto one = modular::f4_replay(trace, inputs[i], layout, {primes[i]});
+            ASSERT_TRUE(one.has_value()) << name << " prime " << primes[i];
+            ASSERT_TRUE(batch[i].has_value()) << name << " prime " << primes[i];
+            ASSERT_EQ(batch[i]->size(), one->size()) << name;
+            for (std::size_t e = 0; e < one->size(); ++e) {
+                EXPECT_EQ((*batch[i])[e].monomials, (*one)[e].monomials) << name;
+                EXPECT_EQ((*batch[i])[e].coefficients, (*one)[e].coefficients) << name;
+            }
+        }
+    }
+}
+
 TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
     // S(x² − p·y, xy − z) = −p·y² + xz: its leading monomial is y² over Q and xz modulo p, so
     // a trace recorded modulo another prime does not fit p. The inputs' leading coefficients
@@ -294,6 +336,16 @@ TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
     modular::F4Trace trace;
     modular::f4(modulo(ideal.generators, other), layout, {other}, {}, nullptr, &trace);
     EXPECT_FALSE(modular::f4_replay(trace, modulo(ideal.generators, p), layout, {p}).has_value());
+    // On lanes, that prime leaves the batch and the others go on.
+    const std::vector<std::uint32_t> batch_primes = {2147483587u, p, 2147483579u};
+    std::vector<std::vector<modular::ModularPolynomial>> inputs;
+    for (const std::uint32_t q : batch_primes) {
+        inputs.push_back(modulo(ideal.generators, q));
+    }
+    const auto batch = modular::f4_replay_lanes(trace, inputs, batch_primes, layout);
+    EXPECT_TRUE(batch[0].has_value());
+    EXPECT_FALSE(batch[1].has_value());
+    EXPECT_TRUE(batch[2].has_value());
     // The multi-modular driver then runs F4 afresh on that prime, and the vote and the lift
     // still give the rational basis.
     ModularOptions options;
