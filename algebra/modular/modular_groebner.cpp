@@ -500,8 +500,8 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     }
     GroebnerOptions probing = options;
     const auto probe = generators.front().ring()->order().is_degree_order()
-                           ? std::chrono::milliseconds(20)
-                           : std::chrono::milliseconds(5);
+                           ? std::chrono::milliseconds(8)
+                           : std::chrono::milliseconds(1);
     const auto probe_end = Clock::now() + probe;
     probing.deadline = options.deadline ? std::min(*options.deadline, probe_end) : probe_end;
     GroebnerResult result = groebner(generators, probing);
