@@ -1,9 +1,10 @@
 #include "algebra/groebner/residue_system.h"
 
 #include <cstring>
-#include <stdexcept>
 
 #include <flint/ulong_extras.h>
+
+#include "algebra/error.h"
 
 namespace locus::algebra::detail {
 
@@ -112,7 +113,8 @@ std::uint32_t ResidueSystem::alpha(const std::uint32_t* digits) const {
     const auto a = static_cast<std::uint32_t>(difference * modulus_inverse_mod_q_ % q);
     if (a >= primes_.size()) {
         // The value was outside (−M/2, M/2): a bound was wrong, and the residues mean nothing.
-        throw std::logic_error("ResidueSystem: a value outside the range its bound promised");
+        // A bug, reported as an error (never a certificate, never a crash).
+        throw Error("internal error: a residue value outside the range its bound promised");
     }
     return a;
 }
