@@ -6,6 +6,7 @@
 
 #include "algebra/error.h"
 #include "algebra/groebner/buchberger.h"
+#include "algebra/groebner/signature_groebner.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/print.h"
@@ -65,14 +66,20 @@ void print_modular_stats(const algebra::ModularStats& s) {
 
 void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring) {
     const auto& s = r.stats;
-    std::fprintf(stderr,
-                 "order: %s\nbasis size: %zu\npairs created: %zu\nremoved by product criterion: "
-                 "%zu\nremoved by chain criterion: %zu\nS-polynomials reduced: %zu\nreductions "
-                 "to zero: %zu\nreduction steps: %zu\nlargest intermediate basis: %zu\ntime: "
-                 "%.6f s\n",
+    std::fprintf(stderr, "order: %s\nbasis size: %zu\npairs created: %zu\n",
                  ring.order().to_string(ring.variable_names()).c_str(), r.basis.size(),
-                 s.pairs_created, s.removed_by_product, s.removed_by_chain, s.reductions,
-                 s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
+                 s.pairs_created);
+    if (s.removed_by_syzygy + s.removed_by_rewriting > 0) {
+        std::fprintf(stderr, "removed as syzygies: %zu\nremoved by rewriting: %zu\n",
+                     s.removed_by_syzygy, s.removed_by_rewriting);
+    } else {
+        std::fprintf(stderr, "removed by product criterion: %zu\nremoved by chain criterion: %zu\n",
+                     s.removed_by_product, s.removed_by_chain);
+    }
+    std::fprintf(stderr,
+                 "S-polynomials reduced: %zu\nreductions to zero: %zu\nreduction steps: "
+                 "%zu\nlargest intermediate basis: %zu\ntime: %.6f s\n",
+                 s.reductions, s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
 }
 
 int run_groebner(const GroebnerArgs& args) {
@@ -104,10 +111,11 @@ int run_groebner(const GroebnerArgs& args) {
     options.threads = args.threads > 0
                           ? args.threads
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    if (args.algorithm != "auto" && args.algorithm != "buchberger" && args.algorithm != "f4" &&
-        args.algorithm != "modular") {
-        throw CommandFailure(exit_input, "--algorithm " + args.algorithm +
-                                             ": expected auto, buchberger, f4 or modular");
+    if (args.algorithm != "auto" && args.algorithm != "buchberger" &&
+        args.algorithm != "signature" && args.algorithm != "f4" && args.algorithm != "modular") {
+        throw CommandFailure(exit_input,
+                             "--algorithm " + args.algorithm +
+                                 ": expected auto, buchberger, signature, f4 or modular");
     }
     if (args.algorithm == "f4") {
         // The reduced basis over Z/pZ, coefficients printed in [0, p).
@@ -151,7 +159,9 @@ int run_groebner(const GroebnerArgs& args) {
             finish_progress();
         } else {
             options.progress = terminal_progress("groebner");
-            result = algebra::groebner(ideal.generators, options);
+            result = args.algorithm == "signature"
+                         ? algebra::signature_groebner(ideal.generators, options)
+                         : algebra::groebner(ideal.generators, options);
             finish_progress();
         }
     } catch (const Timeout&) {
@@ -172,7 +182,9 @@ int run_groebner(const GroebnerArgs& args) {
     std::cout.flush();
     if (args.stats) {
         std::fprintf(stderr, "algorithm: %s\n",
-                     modular ? "modular (multi-modular F4)" : "buchberger");
+                     modular                         ? "modular (multi-modular F4)"
+                     : args.algorithm == "signature" ? "signature (rewrite-based, Schreyer order)"
+                                                     : "buchberger");
         print_stats(result, *ideal.ring);
         if (modular) {
             print_modular_stats(modular_stats);

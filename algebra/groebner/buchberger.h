@@ -43,10 +43,14 @@ struct GroebnerStats {
     std::size_t pairs_created = 0;
     std::size_t removed_by_product = 0;  // product (coprime leading monomials) criterion
     std::size_t removed_by_chain = 0;    // chain criterion (Gebauer–Möller M, F, B steps)
-    std::size_t reductions = 0;          // S-polynomials reduced
-    std::size_t zero_reductions = 0;     // of which reduced to zero
-    std::size_t reduction_steps = 0;     // single a·p − b·m·g steps
-    std::size_t max_basis_size = 0;      // largest intermediate basis
+    // signature_groebner only: signatures skipped as those of syzygies, and by the rewrite
+    // criterion.
+    std::size_t removed_by_syzygy = 0;
+    std::size_t removed_by_rewriting = 0;
+    std::size_t reductions = 0;       // S-polynomials reduced
+    std::size_t zero_reductions = 0;  // of which reduced to zero
+    std::size_t reduction_steps = 0;  // single a·p − b·m·g steps
+    std::size_t max_basis_size = 0;   // largest intermediate basis
     double seconds = 0;
 };
 

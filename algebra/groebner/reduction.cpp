@@ -82,7 +82,8 @@ void Reducer::combine(IntegerPolynomial& p, std::size_t from, const Integer& a, 
 }
 
 IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisElement>& basis,
-                                  ReductionCounts& counts, bool tail) {
+                                  ReductionCounts& counts, bool tail,
+                                  const ReducerAdmission* admission) {
     const std::size_t w = layout_.words();
     IntegerPolynomial result;
     result.sugar = p.sugar;
@@ -123,7 +124,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
                                                            fmpz_bits(result.coefficients[0].get()));
             }
         }
-        const long k = search_.find(lm.data(), layout_);
+        const long k = search_.find(lm.data(), layout_, admission, m.data());
         if (k < 0) {
             result.coefficients.emplace_back(std::move(lc));
             result.monomials.insert(result.monomials.end(), lm.begin(), lm.end());

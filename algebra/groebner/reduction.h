@@ -31,20 +31,43 @@ struct ReductionCounts {
 // per S-pair.
 struct ReductionInterrupted {};
 
+// Which multiples of basis elements a reduction may use. Buchberger's reduction uses every
+// element whose leading monomial divides the term; the signature-based algorithm
+// (signature_groebner.h) only multiples of smaller signature than the polynomial reduced.
+class ReducerAdmission {
+  public:
+    // May multiplier·basis[element] reduce a term of the polynomial being reduced?
+    virtual bool admits(std::size_t element, const std::uint64_t* multiplier) const = 0;
+
+  protected:
+    ~ReducerAdmission() = default;
+};
+
 // Which basis element reduces a term: among the non-redundant elements whose leading monomial
-// divides it, the one with the smallest leading coefficient (ties: the oldest). Reducer and
-// ZeroReducer (zero_reducer.h) choose the same way.
+// divides it (and that `admission` admits, when given), the one with the smallest leading
+// coefficient (ties: the oldest). Reducer and ZeroReducer (zero_reducer.h) choose the same way.
 class ReducerSearch {
   public:
     // Reads `basis`'s non-redundant elements; call again when the basis changes.
     void gather(const std::vector<BasisElement>& basis, const MonomialLayout& layout);
-    // Index in the gathered basis of the element that reduces m, or -1.
-    long find(const std::uint64_t* m, const MonomialLayout& layout) const {
+    // Index in the gathered basis of the element that reduces m, or -1. With an admission,
+    // `multiplier` (words() words) receives m / lm of each divisor tried, so on success it holds
+    // the multiplier of the element returned.
+    long find(const std::uint64_t* m, const MonomialLayout& layout,
+              const ReducerAdmission* admission = nullptr,
+              std::uint64_t* multiplier = nullptr) const {
         const std::uint64_t mask = layout.divisibility_mask(m);
         const std::size_t w = layout.words();
         for (std::size_t k = 0; k < masks_.size(); ++k) {
-            if ((masks_[k] & ~mask) == 0 && layout.divides(monomials_.data() + k * w, m)) {
-                return static_cast<long>(indices_[k]);
+            const std::uint64_t* lm = monomials_.data() + k * w;
+            if ((masks_[k] & ~mask) == 0 && layout.divides(lm, m)) {
+                if (admission == nullptr) {
+                    return static_cast<long>(indices_[k]);
+                }
+                layout.divide(m, lm, multiplier);
+                if (admission->admits(indices_[k], multiplier)) {
+                    return static_cast<long>(indices_[k]);
+                }
             }
         }
         return -1;
@@ -67,10 +90,12 @@ class Reducer {
         deadline_ = deadline;
     }
 
-    // Fully reduces p (leading and tail terms) by the non-redundant elements of `basis`; the
-    // result is primitive with positive leading coefficient, sugar updated, or empty.
+    // Fully reduces p (leading and tail terms) by the non-redundant elements of `basis`, using
+    // only the multiples that `admission` admits when one is given; the result is primitive
+    // with positive leading coefficient, sugar updated, or empty.
     IntegerPolynomial reduce(IntegerPolynomial p, const std::vector<BasisElement>& basis,
-                             ReductionCounts& counts, bool tail = true);
+                             ReductionCounts& counts, bool tail = true,
+                             const ReducerAdmission* admission = nullptr);
 
     // The S-polynomial of basis[i] and basis[j] (fraction-free), with sugar `sugar`.
     IntegerPolynomial s_polynomial(const IntegerPolynomial& f, const IntegerPolynomial& g,

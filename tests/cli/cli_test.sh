@@ -66,7 +66,13 @@ expect "dimension counts a box of 12^8 standard monomials at once" 0 "zero-dimen
 expect "modular result is certified" 0 "certified over Q" -- "$locus" groebner bench/data/cyclic6.ideal --algorithm modular --stats
 expect "f4 modulo a prime" 0 "x0+2*x1+2*x2+2*x3+2*x4+65520" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65521
 expect "f4: not a prime" 2 "expected a prime below 2^31" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65520
-expect "unknown algorithm" 2 "expected auto, buchberger, f4 or modular" -- "$locus" groebner bench/data/katsura5.ideal --algorithm magic
+expect "unknown algorithm" 2 "expected auto, buchberger, signature, f4 or modular" -- "$locus" groebner bench/data/katsura5.ideal --algorithm magic
+expect "signature algorithm prints the expected basis" 0 "" -- \
+    bash -c "\"$locus\" groebner $known/cyclic4_lex.ideal --algorithm signature | diff - $known/cyclic4_lex.expected"
+expect "signature statistics name its criteria" 0 "removed as syzygies" -- \
+    "$locus" groebner bench/data/eco6.ideal --algorithm signature --stats
+expect "signature timeout exits 3" 3 "the basis is not complete" -- \
+    "$locus" groebner bench/data/cyclic7.ideal --algorithm signature --timeout 0.05
 
 printf 'vars: x,y,z\nx^2-y\nx*y-z\n' > "$tmp/twisted.ideal"
 expect "member with cofactors" 0 "cofactor 2:" -- "$locus" ideal member "$tmp/twisted.ideal" "x^3-z"
