@@ -1,6 +1,8 @@
 // Ideal operations over Q built on Gröbner bases (Cox–Little–O'Shea, IVA ch. 3–4; Becker–
 // Weispfenning ch. 6). An ideal is given by generators in one ring; results are reduced Gröbner
 // bases under that ring's order (normalized as in print.h), so they can be compared directly.
+// The bases are computed by the signature-based algorithm (signature_groebner.h); GroebnerOptions'
+// selection strategy therefore has no effect here.
 // `options` reach every Gröbner basis an operation computes; none can use a partial basis, so
 // one stopped at options.deadline throws Timeout (and one past options.max_basis_size,
 // Error). The cofactor search of ideal_membership (a plain Buchberger run that tracks

@@ -182,9 +182,10 @@ int run_groebner(const GroebnerArgs& args) {
     std::cout.flush();
     if (args.stats) {
         std::fprintf(stderr, "algorithm: %s\n",
-                     modular                         ? "modular (multi-modular F4)"
-                     : args.algorithm == "signature" ? "signature (rewrite-based, Schreyer order)"
-                                                     : "buchberger");
+                     modular ? "modular (multi-modular F4)"
+                     : args.algorithm == "buchberger"
+                         ? "buchberger"
+                         : "signature (rewrite-based, Schreyer order)");
         print_stats(result, *ideal.ring);
         if (modular) {
             print_modular_stats(modular_stats);
@@ -221,9 +222,10 @@ void add_groebner_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--selection", args->selection,
                     "pair selection: auto (default) | sugar | degree | normal");
     cmd->add_option("--algorithm", args->algorithm,
-                    "auto (default: modular for degree orders, else buchberger) | buchberger | "
-                    "modular (multi-modular F4 over Q, certified) | f4 (the basis modulo "
-                    "--prime)");
+                    "auto (default: signature for up to 100 ms under degree orders, 1 ms "
+                    "under others, then modular) | buchberger | signature (signature-based, "
+                    "over Q) | modular (multi-modular F4 over Q, certified) | f4 (the basis "
+                    "modulo --prime)");
     cmd->add_option("--prime", args->prime, "the prime below 2^31 of --algorithm f4 (2147483647)");
     cmd->add_flag("--no-certify", args->no_certify,
                   "modular: skip the exact certification (the result is then probabilistic)");

@@ -6,6 +6,7 @@
 
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
+#include "algebra/groebner/signature_groebner.h"
 #include "algebra/ideal_ops.h"
 
 namespace locus::implicit {
@@ -106,7 +107,7 @@ ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOp
         in_coordinates.push_back(g.in_ring(result.ring, down));
     }
     result.generators =
-        in_coordinates.empty() ? in_coordinates : algebra::groebner(in_coordinates).basis;
+        in_coordinates.empty() ? in_coordinates : algebra::signature_groebner(in_coordinates).basis;
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (result.generators.size() == 1) {

@@ -496,15 +496,15 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         *used_modular = false;
     }
     if (generators.empty()) {
-        return groebner(generators, options);
+        return signature_groebner(generators, options);
     }
     GroebnerOptions probing = options;
     const auto probe = generators.front().ring()->order().is_degree_order()
-                           ? std::chrono::milliseconds(8)
+                           ? std::chrono::milliseconds(100)
                            : std::chrono::milliseconds(1);
     const auto probe_end = Clock::now() + probe;
     probing.deadline = options.deadline ? std::min(*options.deadline, probe_end) : probe_end;
-    GroebnerResult result = groebner(generators, probing);
+    GroebnerResult result = signature_groebner(generators, probing);
     if (result.outcome != GroebnerOutcome::stopped_timeout ||
         (options.deadline && Clock::now() >= *options.deadline)) {
         return result;
@@ -521,12 +521,12 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         modular.stats.seconds += result.stats.seconds;
         return modular;
     } catch (const InputError&) {
-        // No stable lift within max_primes (coefficients of tens of thousands of digits):
-        // Buchberger over Q gets there without guessing sizes.
+        // No stable lift within max_primes (coefficients of tens of thousands of digits): the
+        // computation over Q gets there without guessing sizes.
         if (used_modular != nullptr) {
             *used_modular = false;
         }
-        return groebner(generators, options);
+        return signature_groebner(generators, options);
     }
 }
 

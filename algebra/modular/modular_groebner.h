@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "algebra/groebner/buchberger.h"
+#include "algebra/groebner/signature_groebner.h"
 #include "algebra/modular/f4.h"
 
 namespace locus::algebra {
@@ -61,15 +62,14 @@ struct ModularStats {
 GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                                 const ModularOptions& options = {}, ModularStats* stats = nullptr);
 
-// `--algorithm auto`: Buchberger first, for at most 8 ms under degree orders and 1 ms under
-// the others (small ideals finish within it, and there Buchberger beats the modular
-// algorithm's fixed cost of a few primes and a certification; lex bases of zero-dimensional
-// ideals are where Buchberger is slowest and FGLM fastest, hence the shorter probe); if it has
-// not finished, the certified multi-modular algorithm. `options.deadline` bounds the whole.
-// `used_modular` tells which answered. The probes were 20 and 5 ms until the certification and
-// the replays moved to residues: the suite's modular runs then took longer than that
-// (katsura7 modular 10.5 ms now, Buchberger 33 ms; katsura5_lex 2.2 ms against 344 ms), and
-// the suite's Buchberger answers within 8 and 1 ms take at most 4.4 ms (noon5) and 0.6 ms.
+// `--algorithm auto`: the signature-based algorithm (signature_groebner.h) first, for at most
+// 100 ms under degree orders and 1 ms under the others; if it has not finished, the certified
+// multi-modular algorithm. `options.deadline` bounds the whole; `used_modular` tells which
+// answered. Under degree orders the signature algorithm beats the modular one up to katsura-8
+// (57 ms against 91 ms; every suite case), and loses from katsura-9 on (0.58 s against 0.48 s;
+// cyclic-7 3.5 s against 0.63 s), where the probe adds a sixth at most. Under lex, bases of
+// zero-dimensional ideals are where FGLM wins (katsura5_lex 2.7 ms against 17 ms), hence the
+// short probe there. Before the signature algorithm the probe was Buchberger for 8 and 1 ms.
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options = {},
                                   ModularStats* stats = nullptr, bool* used_modular = nullptr);
