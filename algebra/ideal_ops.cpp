@@ -38,7 +38,7 @@ void require_complete(const GroebnerResult& r) {
 // on one 24 µs ideal), and eliminates in bezier_triangle3's implicitization in 0.5 s where
 // Buchberger did not finish in 10 s (docs/performance.md).
 std::vector<Polynomial> basis_of(Generators g, const GroebnerOptions& options) {
-    GroebnerResult r = signature_groebner(g, options);
+    GroebnerResult r = signature_groebner_or_buchberger(g, options);
     require_complete(r);
     return std::move(r.basis);
 }
@@ -69,7 +69,7 @@ std::vector<Polynomial> drop_last_variable(Generators polys, const RingPtr& smal
 // Generators (in `big`, under elim(last)) → reduced basis of the elimination ideal in `small`.
 std::vector<Polynomial> eliminate_last(std::vector<Polynomial> gens, const RingPtr& small,
                                        const GroebnerOptions& options) {
-    GroebnerResult r = signature_groebner(gens, options);
+    GroebnerResult r = signature_groebner_or_buchberger(gens, options);
     require_complete(r);
     const std::size_t last = small->num_vars();
     std::vector<Polynomial> kept;
@@ -215,7 +215,7 @@ std::vector<Polynomial> eliminate(Generators generators, std::span<const std::si
     for (const auto& g : generators) {
         moved.push_back(g.in_ring(elim_ring));
     }
-    GroebnerResult r = signature_groebner(moved, options);
+    GroebnerResult r = signature_groebner_or_buchberger(moved, options);
     require_complete(r);
     std::vector<Polynomial> kept;
     for (const auto& g : r.basis) {

@@ -182,10 +182,9 @@ int run_groebner(const GroebnerArgs& args) {
     std::cout.flush();
     if (args.stats) {
         std::fprintf(stderr, "algorithm: %s\n",
-                     modular ? "modular (multi-modular F4)"
-                     : args.algorithm == "buchberger"
-                         ? "buchberger"
-                         : "signature (rewrite-based, Schreyer order)");
+                     modular                          ? "modular (multi-modular F4)"
+                     : args.algorithm == "buchberger" ? "buchberger"
+                                                      : "signature (SB, Schreyer order)");
         print_stats(result, *ideal.ring);
         if (modular) {
             print_modular_stats(modular_stats);

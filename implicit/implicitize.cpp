@@ -106,8 +106,9 @@ ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOp
     for (const auto& g : kept) {
         in_coordinates.push_back(g.in_ring(result.ring, down));
     }
-    result.generators =
-        in_coordinates.empty() ? in_coordinates : algebra::signature_groebner(in_coordinates).basis;
+    result.generators = in_coordinates.empty()
+                            ? in_coordinates
+                            : algebra::signature_groebner_or_buchberger(in_coordinates).basis;
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (result.generators.size() == 1) {

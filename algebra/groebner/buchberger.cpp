@@ -91,9 +91,6 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         return result;
     }
     const RingPtr& ring = generators[0].ring();
-    for (const auto& g : generators) {
-        require_same_ring(generators[0], g);
-    }
     const MonomialLayout& layout = ring->layout();
     const std::size_t w = layout.words();
     auto finish = [&](GroebnerResult& r) {
@@ -107,17 +104,7 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
     detail::ReductionCounts reduction;
     detail::Reducer reducer(layout);
 
-    // Inputs in increasing leading monomial order: small elements first make better reducers.
-    std::vector<IntegerPolynomial> inputs;
-    for (const auto& g : generators) {
-        if (!g.is_zero()) {
-            inputs.push_back(detail::to_integer_polynomial(g));
-        }
-    }
-    std::sort(inputs.begin(), inputs.end(),
-              [&](const IntegerPolynomial& a, const IntegerPolynomial& b) {
-                  return layout.compare(a.monomial(0, w), b.monomial(0, w)) < 0;
-              });
+    std::vector<IntegerPolynomial> inputs = detail::sorted_integer_generators(generators);
 
     bool unit = false;
     auto add_to_basis = [&](IntegerPolynomial h) {

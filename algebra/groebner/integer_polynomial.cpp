@@ -2,7 +2,29 @@
 
 #include <algorithm>
 
+#include "algebra/error.h"
+
 namespace locus::algebra::detail {
+
+std::vector<IntegerPolynomial> sorted_integer_generators(std::span<const Polynomial> generators) {
+    std::vector<IntegerPolynomial> inputs;
+    if (generators.empty()) {
+        return inputs;
+    }
+    for (const Polynomial& g : generators) {
+        require_same_ring(generators[0], g);
+        if (!g.is_zero()) {
+            inputs.push_back(to_integer_polynomial(g));
+        }
+    }
+    const MonomialLayout& layout = generators[0].ring()->layout();
+    const std::size_t w = layout.words();
+    std::sort(inputs.begin(), inputs.end(),
+              [&](const IntegerPolynomial& a, const IntegerPolynomial& b) {
+                  return layout.compare(a.monomial(0, w), b.monomial(0, w)) < 0;
+              });
+    return inputs;
+}
 
 IntegerPolynomial to_integer_polynomial(const Polynomial& f) {
     IntegerPolynomial p;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "algebra/polynomial.h"
@@ -30,6 +31,10 @@ struct IntegerPolynomial {
 
 // Clears denominators and divides by the content; leading coefficient made positive.
 IntegerPolynomial to_integer_polynomial(const Polynomial& f);
+// The non-zero generators as integer polynomials (to_integer_polynomial), leading monomials
+// ascending: the order in which the Gröbner algorithms take them (small elements first make
+// better reducers). Throws MixedRings unless all share one ring.
+std::vector<IntegerPolynomial> sorted_integer_generators(std::span<const Polynomial> generators);
 // Back to Q, made monic.
 Polynomial to_monic_polynomial(const IntegerPolynomial& f, const RingPtr& ring);
 // Divides by the gcd of the coefficients and makes the leading coefficient positive.

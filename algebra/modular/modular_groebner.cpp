@@ -496,7 +496,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         *used_modular = false;
     }
     if (generators.empty()) {
-        return signature_groebner(generators, options);
+        return signature_groebner_or_buchberger(generators, options);
     }
     GroebnerOptions probing = options;
     const auto probe = generators.front().ring()->order().is_degree_order()
@@ -504,7 +504,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                            : std::chrono::milliseconds(1);
     const auto probe_end = Clock::now() + probe;
     probing.deadline = options.deadline ? std::min(*options.deadline, probe_end) : probe_end;
-    GroebnerResult result = signature_groebner(generators, probing);
+    GroebnerResult result = signature_groebner_or_buchberger(generators, probing);
     if (result.outcome != GroebnerOutcome::stopped_timeout ||
         (options.deadline && Clock::now() >= *options.deadline)) {
         return result;
@@ -526,7 +526,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         if (used_modular != nullptr) {
             *used_modular = false;
         }
-        return signature_groebner(generators, options);
+        return signature_groebner_or_buchberger(generators, options);
     }
 }
 

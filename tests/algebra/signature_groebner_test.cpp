@@ -80,6 +80,7 @@ TEST(SignatureOracle, AgreesWithSingularOnRandomIdealsUnderBothOrders) {
             for (const SignatureOrder order : kOrders) {
                 SCOPED_TRACE(order_name(order));
                 const GroebnerResult r = signature_groebner(file.generators, {}, order);
+                EXPECT_EQ(r.outcome, GroebnerOutcome::complete);
                 EXPECT_EQ(normalized(r.basis, *file.ring), expected);
             }
             ++cases;
@@ -205,6 +206,20 @@ TEST(SignatureProperties, EqualsBuchbergerWhateverTheGeneratorOrder) {
     EXPECT_GE(compared, test::seed_count(60) * 9 / 10);
 }
 
+// Generators that share their leading monomial, and zero generators among them: the Schreyer
+// order then breaks ties between signatures by the generators' numbers.
+TEST(Signature, EqualLeadingMonomialsAndZeroGenerators) {
+    const RingPtr r = PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
+    const std::vector<Polynomial> f = {Polynomial(r), parse_polynomial("x^2*y+y^3-z", r),
+                                       parse_polynomial("x^2*y+x*z+2", r), Polynomial(r),
+                                       parse_polynomial("x^2*y-y*z^2+x", r)};
+    const std::vector<Polynomial> expected = groebner(f).basis;
+    for (const SignatureOrder order : kOrders) {
+        SCOPED_TRACE(order_name(order));
+        EXPECT_EQ(signature_groebner(f, {}, order).basis, expected);
+    }
+}
+
 TEST(Signature, EdgeCases) {
     const RingPtr r = PolyRing::make({"x", "y"}, MonomialOrder::grevlex(2));
     EXPECT_TRUE(signature_groebner(std::vector<Polynomial>{}).basis.empty());
@@ -237,6 +252,77 @@ TEST(Signature, StopsWithAGeneratingSetOnTimeoutAndSize) {
     EXPECT_EQ(signature_groebner(ideal.generators, timeout).outcome,
               GroebnerOutcome::stopped_timeout);
     EXPECT_EQ(signature_groebner(ideal.generators, size).outcome, GroebnerOutcome::stopped_size);
+}
+
+// A deadline that passes during a reduction stops it within 16 steps, not at the next signature:
+// x^2000 - 1 is reduced by x - y in 2000 steps. (A machine that stalls for 20 ms before the
+// second signature stops at the loop's check instead, with fewer steps still.)
+TEST(Signature, DeadlineInterruptsALongReduction) {
+    const RingPtr ring = PolyRing::make({"x", "y"}, MonomialOrder::grevlex(2));
+    const std::vector<Polynomial> f = {parse_polynomial("x-y", ring),
+                                       parse_polynomial("x^2000-1", ring)};
+    const GroebnerResult full = signature_groebner(f);
+    ASSERT_GE(full.stats.reduction_steps, 2000u);
+    // The deadline is 20 ms ahead; the progress call of the second signature (that of
+    // x^2000 - 1) waits it out, after the loop has checked it and before the reduction starts.
+    GroebnerOptions options;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(20);
+    options.deadline = deadline;
+    options.progress = [&](const GroebnerProgress& p) {
+        if (p.pairs_done == 2) {
+            while (std::chrono::steady_clock::now() <= deadline) {
+            }
+        }
+    };
+    const GroebnerResult r = signature_groebner(f, options);
+    EXPECT_EQ(r.outcome, GroebnerOutcome::stopped_timeout);
+    EXPECT_LE(r.stats.reduction_steps, 32u);
+    EXPECT_EQ(groebner(r.basis).basis, full.basis);
+}
+
+// Progress reports one call per signature taken, in order, and ends with nothing queued.
+TEST(Signature, ProgressCountsSignatures) {
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura5.ideal"));
+    std::vector<GroebnerProgress> calls;
+    GroebnerOptions options;
+    options.progress = [&](const GroebnerProgress& p) { calls.push_back(p); };
+    const GroebnerResult r = signature_groebner(ideal.generators, options);
+    ASSERT_FALSE(calls.empty());
+    for (std::size_t k = 0; k < calls.size(); ++k) {
+        EXPECT_EQ(calls[k].pairs_done, k + 1);
+        if (k > 0) {
+            EXPECT_GE(calls[k].basis_size, calls[k - 1].basis_size);
+        }
+    }
+    EXPECT_EQ(calls.back().pairs_left, 0u);
+    // Every reduction follows its own call; the rest were skipped by a criterion.
+    EXPECT_GE(calls.size(), r.stats.reductions);
+    EXPECT_GE(r.stats.reductions, ideal.generators.size());
+}
+
+// Signatures can exceed the polynomials' degrees: under weights(16000,1), where x^2 alone has
+// weight 32000, the signatures of these ideals' elements leave the packed range (32767) while
+// Buchberger's lcms stay inside it (x^2*y: 32001). signature_groebner reports the overflow; the
+// fallback answers with Buchberger's basis.
+TEST(Signature, FallsBackToBuchbergerWhenASignatureOverflows) {
+    const RingPtr r =
+        PolyRing::make({"x", "y"}, MonomialOrder::weighted(std::vector<std::int64_t>{16000, 1}));
+    const std::vector<std::vector<Polynomial>> ideals = {
+        {parse_polynomial("x^2-y", r), parse_polynomial("x*y-1", r)},
+        {parse_polynomial("x^2+y", r), parse_polynomial("x^2+y^2", r),
+         parse_polynomial("x*y+1", r)}};
+    for (const auto& f : ideals) {
+        EXPECT_THROW(signature_groebner(f), locus::ExponentOverflow);
+        EXPECT_EQ(signature_groebner_or_buchberger(f).basis, groebner(f).basis);
+    }
+    EXPECT_EQ(normalized(signature_groebner_or_buchberger(ideals[0]).basis, *r), "y^3-1\nx-y^2\n");
+    // Where nothing overflows, the signature algorithm answers.
+    const RingPtr g = PolyRing::make({"x", "y"}, MonomialOrder::grevlex(2));
+    const std::vector<Polynomial> h = {parse_polynomial("x^2-y", g), parse_polynomial("x*y-1", g)};
+    EXPECT_EQ(signature_groebner_or_buchberger(h).stats.removed_by_syzygy,
+              signature_groebner(h).stats.removed_by_syzygy);
+    EXPECT_GT(signature_groebner(h).stats.removed_by_syzygy, 0u);
 }
 
 TEST(Signature, RejectsMixedRings) {
