@@ -14,7 +14,7 @@
 #include "algebra/groebner/verify.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
-#include "tests/support/test_data.h"
+#include "tests/support/ideal_cases.h"
 
 namespace locus::algebra {
 namespace {
@@ -23,20 +23,8 @@ std::string known_dir() {
     return test::source_dir() + "/tests/data/known";
 }
 
-std::vector<std::string> registered_known_cases() {
-    std::vector<std::string> names;
-    std::istringstream in(test::read_text(known_dir() + "/CASES.txt"));
-    std::string line;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line[0] != '#') {
-            names.push_back(line);
-        }
-    }
-    return names;
-}
-
 TEST(GroebnerKnown, EveryDataFileIsRegisteredAndEveryCaseHasData) {
-    const auto names = registered_known_cases();
+    const auto names = test::known_case_names();
     ASSERT_GE(names.size(), 20u);
     std::size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(known_dir())) {
@@ -65,40 +53,11 @@ TEST_P(GroebnerKnown, MatchesExpectedBasis) {
     EXPECT_TRUE(is_reduced(r.basis));
 }
 
-INSTANTIATE_TEST_SUITE_P(Literature, GroebnerKnown, ::testing::ValuesIn(registered_known_cases()),
+INSTANTIATE_TEST_SUITE_P(Literature, GroebnerKnown, ::testing::ValuesIn(test::known_case_names()),
                          [](const auto& param_info) { return param_info.param; });
 
-struct OracleCase {
-    std::string number, ideal, expected;
-};
-
-std::vector<OracleCase> oracle_cases() {
-    const std::string text = test::read_text(test::source_dir() + "/tests/data/oracle/random.txt");
-    std::vector<OracleCase> cases;
-    std::istringstream in(text);
-    std::string line;
-    OracleCase current;
-    enum { outside, ideal, expected } state = outside;
-    while (std::getline(in, line)) {
-        if (state == outside && line.rfind("case ", 0) == 0) {
-            current = {line.substr(5), "", ""};
-            state = ideal;
-        } else if (state == ideal && line == "expected:") {
-            state = expected;
-        } else if (state == ideal) {
-            current.ideal += line + "\n";
-        } else if (state == expected && line == "end") {
-            cases.push_back(current);
-            state = outside;
-        } else if (state == expected) {
-            current.expected += line + "\n";
-        }
-    }
-    return cases;
-}
-
 TEST(GroebnerOracle, AgreesWithSingularOnRandomIdeals) {
-    const auto cases = oracle_cases();
+    const auto cases = test::oracle_cases();
     ASSERT_GE(cases.size(), 200u);
     for (const auto& c : cases) {
         SCOPED_TRACE("oracle case " + c.number);
@@ -108,36 +67,12 @@ TEST(GroebnerOracle, AgreesWithSingularOnRandomIdeals) {
     }
 }
 
-// A random small ideal: 2–4 variables, 2–4 sparse generators of degree ≤ 4.
-IdealFile random_ideal(std::mt19937_64& rng, int seed) {
-    const char* orders[] = {"lex", "grlex", "grevlex", "weights(1,2,1,3)", "elim(y)", "elim(x,z)"};
-    const std::vector<std::string> all = {"x", "y", "z", "w"};
-    const std::size_t n = 2 + static_cast<std::size_t>(seed) % 3;
-    std::vector<std::string> names(all.begin(), all.begin() + static_cast<long>(n));
-    std::string order = orders[seed % 6];
-    if (order.rfind("weights", 0) == 0) {
-        order = n == 2 ? "weights(1,2)" : n == 3 ? "weights(1,2,1)" : order;
-    }
-    if (order == "elim(x,z)" && n == 2) {
-        order = "elim(x)";
-    }
-    IdealFile f;
-    f.ring = PolyRing::make(names, parse_monomial_order(order, names));
-    const int count = 2 + seed % 3;
-    for (int k = 0; k < count; ++k) {
-        // Exponents up to 2 in 2–3 variables, up to 1 in 4 (degree ≤ 4 either way).
-        f.generators.push_back(
-            test::random_polynomial(f.ring, rng, 2 + (seed + k) % 3, n == 4 ? 1 : 2));
-    }
-    return f;
-}
-
 TEST(GroebnerProperties, VerifiedReducedAndIndependentOfInputOrderAndStrategy) {
     int skipped = 0;
     for (int seed = 0; seed < test::seed_count(60); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         std::mt19937_64 rng(seed);
-        const IdealFile ideal = random_ideal(rng, seed);
+        const IdealFile ideal = test::random_ideal(rng, seed);
         // Some random ideals are genuinely hard (seed 23, an elim(x,z) ideal, runs Singular
         // past a minute): a deterministic size limit skips them, and most seeds must finish.
         GroebnerOptions limited;
@@ -196,7 +131,7 @@ TEST(GroebnerVerify, CertificationAgreesWithTheRationalCheck) {
     for (int seed = 0; seed < test::seed_count(40); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         std::mt19937_64 rng(1000 + static_cast<unsigned>(seed));
-        const IdealFile ideal = random_ideal(rng, seed);
+        const IdealFile ideal = test::random_ideal(rng, seed);
         GroebnerOptions limited;
         limited.max_basis_size = 40;
         const GroebnerResult r = groebner(ideal.generators, limited);

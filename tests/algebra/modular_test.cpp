@@ -13,7 +13,7 @@
 #include "algebra/groebner/verify.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
-#include "tests/support/test_data.h"
+#include "tests/support/ideal_cases.h"
 
 namespace locus::algebra {
 namespace {
@@ -21,17 +21,6 @@ namespace {
 // The basis as text, normalized (print.h): equal bases, equal texts.
 std::string normalized(const std::vector<Polynomial>& basis, const PolyRing& ring) {
     return format_polynomials(basis, ring, OutputFormat::normalized);
-}
-
-std::vector<std::string> known_cases() {
-    std::vector<std::string> names;
-    std::istringstream in(test::read_text(test::source_dir() + "/tests/data/known/CASES.txt"));
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line[0] != '#') {
-            names.push_back(line);
-        }
-    }
-    return names;
 }
 
 class ModularKnown : public ::testing::TestWithParam<std::string> {};
@@ -46,42 +35,24 @@ TEST_P(ModularKnown, EqualsBuchbergerAndIsCertified) {
     EXPECT_TRUE(is_reduced(r.basis));
 }
 
-INSTANTIATE_TEST_SUITE_P(Literature, ModularKnown, ::testing::ValuesIn(known_cases()),
+INSTANTIATE_TEST_SUITE_P(Literature, ModularKnown, ::testing::ValuesIn(test::known_case_names()),
                          [](const auto& param_info) { return param_info.param; });
 
 TEST(Modular, AgreesWithSingularOracleOnRandomIdeals) {
-    const std::string text = test::read_text(test::source_dir() + "/tests/data/oracle/random.txt");
-    std::istringstream in(text);
-    std::string line, ideal, expected;
-    enum { outside, reading_ideal, reading_expected } state = outside;
-    int cases = 0;
-    while (std::getline(in, line)) {
-        if (state == outside && line.rfind("case ", 0) == 0) {
-            ideal.clear();
-            expected.clear();
-            state = reading_ideal;
-        } else if (state == reading_ideal && line == "expected:") {
-            state = reading_expected;
-        } else if (state == reading_ideal) {
-            ideal += line + "\n";
-        } else if (state == reading_expected && line == "end") {
-            const IdealFile file = parse_ideal_file(ideal);
-            GroebnerResult r;
-            try {
-                r = modular_groebner(file.generators);
-            } catch (const Error& e) {
-                ADD_FAILURE() << e.what() << " on\n" << ideal;
-                state = outside;
-                continue;
-            }
-            EXPECT_EQ(normalized(r.basis, *file.ring), expected) << ideal;
-            ++cases;
-            state = outside;
-        } else if (state == reading_expected) {
-            expected += line + "\n";
+    const auto cases = test::oracle_cases();
+    ASSERT_GE(cases.size(), 200u);
+    for (const auto& c : cases) {
+        SCOPED_TRACE("oracle case " + c.number);
+        const IdealFile file = parse_ideal_file(c.ideal);
+        GroebnerResult r;
+        try {
+            r = modular_groebner(file.generators);
+        } catch (const Error& e) {
+            ADD_FAILURE() << e.what() << " on\n" << c.ideal;
+            continue;
         }
+        EXPECT_EQ(normalized(r.basis, *file.ring), c.expected);
     }
-    EXPECT_GE(cases, 200);
 }
 
 TEST(Modular, LexGoesThroughFglmExactlyWhenTheIdealIsZeroDimensional) {

@@ -16,7 +16,7 @@
 #include "algebra/groebner/verify.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
-#include "tests/support/test_data.h"
+#include "tests/support/ideal_cases.h"
 
 namespace locus::algebra {
 namespace {
@@ -30,17 +30,6 @@ const char* order_name(SignatureOrder order) {
 }
 
 constexpr SignatureOrder kOrders[] = {SignatureOrder::schreyer, SignatureOrder::position_over_term};
-
-std::vector<std::string> known_cases() {
-    std::vector<std::string> names;
-    std::istringstream in(test::read_text(test::source_dir() + "/tests/data/known/CASES.txt"));
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line[0] != '#') {
-            names.push_back(line);
-        }
-    }
-    return names;
-}
 
 class SignatureKnown : public ::testing::TestWithParam<std::string> {};
 
@@ -56,40 +45,22 @@ TEST_P(SignatureKnown, MatchesExpectedBasisUnderBothOrders) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Literature, SignatureKnown, ::testing::ValuesIn(known_cases()),
+INSTANTIATE_TEST_SUITE_P(Literature, SignatureKnown, ::testing::ValuesIn(test::known_case_names()),
                          [](const auto& param_info) { return param_info.param; });
 
 TEST(SignatureOracle, AgreesWithSingularOnRandomIdealsUnderBothOrders) {
-    std::istringstream in(test::read_text(test::source_dir() + "/tests/data/oracle/random.txt"));
-    std::string line, number, ideal, expected;
-    enum { outside, reading_ideal, reading_expected } state = outside;
-    int cases = 0;
-    while (std::getline(in, line)) {
-        if (state == outside && line.rfind("case ", 0) == 0) {
-            number = line.substr(5);
-            ideal.clear();
-            expected.clear();
-            state = reading_ideal;
-        } else if (state == reading_ideal && line == "expected:") {
-            state = reading_expected;
-        } else if (state == reading_ideal) {
-            ideal += line + "\n";
-        } else if (state == reading_expected && line == "end") {
-            SCOPED_TRACE("oracle case " + number);
-            const IdealFile file = parse_ideal_file(ideal);
-            for (const SignatureOrder order : kOrders) {
-                SCOPED_TRACE(order_name(order));
-                const GroebnerResult r = signature_groebner(file.generators, {}, order);
-                EXPECT_EQ(r.outcome, GroebnerOutcome::complete);
-                EXPECT_EQ(normalized(r.basis, *file.ring), expected);
-            }
-            ++cases;
-            state = outside;
-        } else if (state == reading_expected) {
-            expected += line + "\n";
+    const auto cases = test::oracle_cases();
+    ASSERT_GE(cases.size(), 200u);
+    for (const auto& c : cases) {
+        SCOPED_TRACE("oracle case " + c.number);
+        const IdealFile file = parse_ideal_file(c.ideal);
+        for (const SignatureOrder order : kOrders) {
+            SCOPED_TRACE(order_name(order));
+            const GroebnerResult r = signature_groebner(file.generators, {}, order);
+            EXPECT_EQ(r.outcome, GroebnerOutcome::complete);
+            EXPECT_EQ(normalized(r.basis, *file.ring), c.expected);
         }
     }
-    EXPECT_GE(cases, 200);
 }
 
 // n random dense homogeneous polynomials in n variables, of degrees 2 and 3 alternately, with
@@ -157,35 +128,12 @@ TEST(SignatureCriteria, RemoveMostOfBuchbergersZeroReductionsOnEco7) {
     EXPECT_GT(r.stats.removed_by_rewriting, 0u);
 }
 
-// A random small ideal as in groebner_test.cpp: 2–4 variables, 2–4 sparse generators.
-IdealFile random_ideal(std::mt19937_64& rng, int seed) {
-    const char* orders[] = {"lex", "grlex", "grevlex", "weights(1,2,1,3)", "elim(y)", "elim(x,z)"};
-    const std::vector<std::string> all = {"x", "y", "z", "w"};
-    const std::size_t n = 2 + static_cast<std::size_t>(seed) % 3;
-    std::vector<std::string> names(all.begin(), all.begin() + static_cast<long>(n));
-    std::string order = orders[seed % 6];
-    if (order.rfind("weights", 0) == 0) {
-        order = n == 2 ? "weights(1,2)" : n == 3 ? "weights(1,2,1)" : order;
-    }
-    if (order == "elim(x,z)" && n == 2) {
-        order = "elim(x)";
-    }
-    IdealFile f;
-    f.ring = PolyRing::make(names, parse_monomial_order(order, names));
-    const int count = 2 + seed % 3;
-    for (int k = 0; k < count; ++k) {
-        f.generators.push_back(
-            test::random_polynomial(f.ring, rng, 2 + (seed + k) % 3, n == 4 ? 1 : 2));
-    }
-    return f;
-}
-
 TEST(SignatureProperties, EqualsBuchbergerWhateverTheGeneratorOrder) {
     int compared = 0;
     for (int seed = 0; seed < test::seed_count(60); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         std::mt19937_64 rng(5000 + static_cast<unsigned>(seed));
-        const IdealFile ideal = random_ideal(rng, seed);
+        const IdealFile ideal = test::random_ideal(rng, seed);
         GroebnerOptions limited;
         limited.max_basis_size = 40;
         const GroebnerResult expected = groebner(ideal.generators, limited);
