@@ -69,7 +69,7 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
     std::fprintf(stderr, "order: %s\nbasis size: %zu\npairs created: %zu\n",
                  ring.order().to_string(ring.variable_names()).c_str(), r.basis.size(),
                  s.pairs_created);
-    if (s.removed_by_syzygy + s.removed_by_rewriting > 0) {
+    if (s.algorithm == algebra::GroebnerAlgorithm::signature) {
         std::fprintf(stderr, "removed as syzygies: %zu\nremoved by rewriting: %zu\n",
                      s.removed_by_syzygy, s.removed_by_rewriting);
     } else {
@@ -181,10 +181,12 @@ int run_groebner(const GroebnerArgs& args) {
     std::cout << algebra::format_polynomials(result.basis, *ideal.ring, format);
     std::cout.flush();
     if (args.stats) {
+        const auto algorithm = result.stats.algorithm;
         std::fprintf(stderr, "algorithm: %s\n",
-                     modular                          ? "modular (multi-modular F4)"
-                     : args.algorithm == "buchberger" ? "buchberger"
-                                                      : "signature (SB, Schreyer order)");
+                     algorithm == algebra::GroebnerAlgorithm::modular ? "modular (multi-modular F4)"
+                     : algorithm == algebra::GroebnerAlgorithm::signature
+                         ? "signature (SB, Schreyer order)"
+                         : "buchberger");
         print_stats(result, *ideal.ring);
         if (modular) {
             print_modular_stats(modular_stats);

@@ -39,7 +39,15 @@ enum class GroebnerOutcome {
     stopped_size,     // basis grew past max_basis_size; same guarantee as above
 };
 
+// Which algorithm computed a basis: `auto` and the ideal operations choose among them.
+enum class GroebnerAlgorithm {
+    buchberger,  // groebner() (buchberger.h)
+    signature,   // signature_groebner() (signature_groebner.h)
+    modular,     // modular_groebner() (modular/modular_groebner.h)
+};
+
 struct GroebnerStats {
+    GroebnerAlgorithm algorithm = GroebnerAlgorithm::buchberger;
     std::size_t pairs_created = 0;
     std::size_t removed_by_product = 0;  // product (coprime leading monomials) criterion
     std::size_t removed_by_chain = 0;    // chain criterion (Gebauer–Möller M, F, B steps)

@@ -454,6 +454,7 @@ GroebnerResult signature_groebner(std::span<const Polynomial> generators,
             result = run.run(options, ring);
         }
     }
+    result.stats.algorithm = GroebnerAlgorithm::signature;
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

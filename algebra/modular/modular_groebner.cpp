@@ -270,6 +270,7 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         }
     }
     GroebnerResult result;
+    result.stats.algorithm = GroebnerAlgorithm::modular;
     if (inputs.empty()) {
         result.stats.seconds = seconds_since(start);
         return result;

@@ -71,6 +71,11 @@ expect "signature algorithm prints the expected basis" 0 "" -- \
     bash -c "\"$locus\" groebner $known/cyclic4_lex.ideal --algorithm signature | diff - $known/cyclic4_lex.expected"
 expect "signature statistics name its criteria" 0 "removed as syzygies" -- \
     "$locus" groebner bench/data/eco6.ideal --algorithm signature --stats
+printf 'vars: x,y\norder: weights(16000,1)\nx^2-y\nx*y-1\n' > "$tmp/heavy.ideal"
+expect "signature: a signature past the packed range is an input error" 2 "exponent overflow" -- \
+    "$locus" groebner "$tmp/heavy.ideal" --algorithm signature
+expect "auto answers it with Buchberger and says so" 0 "algorithm: buchberger" -- \
+    "$locus" groebner "$tmp/heavy.ideal" --stats
 expect "signature timeout exits 3" 3 "the basis is not complete" -- \
     "$locus" groebner bench/data/cyclic7.ideal --algorithm signature --timeout 0.05
 
