@@ -84,6 +84,17 @@ std::vector<Polynomial> unit_basis(const RingPtr& ring) {
 
 }  // namespace
 
+std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
+                                              std::size_t basis_size) {
+    if (options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+        return GroebnerOutcome::stopped_timeout;
+    }
+    if (options.max_basis_size != 0 && basis_size > options.max_basis_size) {
+        return GroebnerOutcome::stopped_size;
+    }
+    return std::nullopt;
+}
+
 GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     GroebnerResult result;
@@ -134,12 +145,8 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
     const ResolvedSelection selection = resolve_selection(options.selection, ring->order());
     std::size_t pairs_done = 0;
     while (!pairs.empty() && !unit) {
-        if (options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
-            result.outcome = GroebnerOutcome::stopped_timeout;
-            break;
-        }
-        if (options.max_basis_size != 0 && basis.size() > options.max_basis_size) {
-            result.outcome = GroebnerOutcome::stopped_size;
+        if (const auto stop = requested_stop(options, basis.size())) {
+            result.outcome = *stop;
             break;
         }
         const std::size_t k = select_pair(pairs, selection.strategy, layout);

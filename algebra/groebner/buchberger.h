@@ -81,6 +81,12 @@ struct GroebnerOptions {
     int threads = 1;
 };
 
+// Whether a run must stop now under `options`, with `basis_size` elements: stopped_timeout once
+// the deadline has passed, stopped_size once the basis is past max_basis_size, else nothing.
+// Polled by groebner() before each S-pair and by signature_groebner() before each signature.
+std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
+                                              std::size_t basis_size);
+
 struct GroebnerResult {
     std::vector<Polynomial> basis;  // normalized (print.h): monic, leading monomials ascending
     GroebnerOutcome outcome = GroebnerOutcome::complete;

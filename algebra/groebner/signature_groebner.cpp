@@ -360,12 +360,8 @@ GroebnerResult SignatureRun::run(const GroebnerOptions& options, const RingPtr& 
     }
     std::size_t signatures_done = 0;
     while (!heap_.empty()) {
-        if (options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
-            result.outcome = GroebnerOutcome::stopped_timeout;
-            break;
-        }
-        if (options.max_basis_size != 0 && basis_.size() > options.max_basis_size) {
-            result.outcome = GroebnerOutcome::stopped_size;
+        if (const auto stop = requested_stop(options, basis_.size())) {
+            result.outcome = *stop;
             break;
         }
         // The least signature, once however many S-pairs reach it.
