@@ -124,6 +124,12 @@ class SignatureRun final : public detail::ReducerAdmission {
     // Whether some multiple of an element of smaller signature than the target has leading
     // monomial m (the target must be set).
     bool has_regular_reducer(const std::uint64_t* m);
+    // The heap's order: a before b when a's signature is the larger, so the least is on top.
+    auto later_than() const {
+        return [this](const QueuedPair& a, const QueuedPair& b) {
+            return compare(a.index, pair_key(a), b.index, pair_key(b)) > 0;
+        };
+    }
     void push(std::uint32_t index, const std::uint64_t* sig);
     QueuedPair pop();
     void add_element(IntegerPolynomial h);
@@ -140,7 +146,6 @@ class SignatureRun final : public detail::ReducerAdmission {
     std::vector<std::uint32_t> index_;
     std::vector<std::uint64_t> element_signatures_;  // 2w words an element
     std::vector<std::uint64_t> element_masks_;       // divisibility masks of the t's
-    std::vector<std::uint64_t> lead_masks_;          // divisibility masks of the lm's
     std::vector<std::vector<std::uint32_t>> elements_of_index_;
 
     // Known syzygy signatures per index, kept minimal: monomials (w words each) and masks.
@@ -232,7 +237,7 @@ std::optional<std::uint32_t> SignatureRun::least_lead_element(std::uint32_t inde
 bool SignatureRun::has_regular_reducer(const std::uint64_t* m) {
     const std::uint64_t mask = layout_.divisibility_mask(m);
     for (std::size_t e = 0; e < basis_.size(); ++e) {
-        if ((lead_masks_[e] & ~mask) == 0 && layout_.divides(lm_of(e), m)) {
+        if ((basis_[e].poly.leading_mask & ~mask) == 0 && layout_.divides(lm_of(e), m)) {
             layout_.divide(m, lm_of(e), candidate_.data());
             if (admits(e, candidate_.data())) {
                 return true;
@@ -253,15 +258,11 @@ void SignatureRun::push(std::uint32_t index, const std::uint64_t* sig) {
     }
     std::copy_n(sig, 2 * w_, pair_signatures_.data() + 2 * w_ * slot);
     heap_.push_back({index, slot});
-    std::push_heap(heap_.begin(), heap_.end(), [this](const QueuedPair& a, const QueuedPair& b) {
-        return compare(a.index, pair_key(a), b.index, pair_key(b)) > 0;
-    });
+    std::push_heap(heap_.begin(), heap_.end(), later_than());
 }
 
 QueuedPair SignatureRun::pop() {
-    std::pop_heap(heap_.begin(), heap_.end(), [this](const QueuedPair& a, const QueuedPair& b) {
-        return compare(a.index, pair_key(a), b.index, pair_key(b)) > 0;
-    });
+    std::pop_heap(heap_.begin(), heap_.end(), later_than());
     const QueuedPair p = heap_.back();
     heap_.pop_back();
     free_slots_.push_back(p.slot);
@@ -323,8 +324,6 @@ void SignatureRun::add_element(IntegerPolynomial h) {
         }
         push(index, sig);
     }
-    h.leading_mask = layout_.divisibility_mask(lm_h);
-    lead_masks_.push_back(h.leading_mask);
     basis_.push_back({std::move(h), false});
     index_.push_back(target_index_);
     element_signatures_.insert(element_signatures_.end(), target_.begin(), target_.end());
