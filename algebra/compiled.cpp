@@ -6,6 +6,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "algebra/detail/double_double.h"
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
 #include "algebra/parse.h"
@@ -42,26 +43,64 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
     : exact_(std::move(exact)), made_square_free_(made_square_free) {
     const Polynomial& f = exact_->f;
     degree_ = static_cast<int>(f.total_degree());
-    terms_.reserve(f.num_terms());
+    // Each coefficient as the double nearest to it and, for enclose_on_line, the double
+    // nearest to the remainder; the relative errors of both are measured exactly.
+    struct Rounded {
+        CompiledTerm term;
+        double low_word;
+    };
+    std::vector<Rounded> rounded;
+    rounded.reserve(f.num_terms());
+    Rational remainder, part;
     for (std::size_t i = 0; i < f.num_terms(); ++i) {
         const std::vector<std::uint32_t> e = f.exponents(i);
-        terms_.push_back({fmpq_get_d(f.coefficient(i).get()), static_cast<int>(e[0]),
-                          static_cast<int>(e[1]), static_cast<int>(e[2])});
+        const fmpq* c = f.coefficient(i).get();
+        const double high = nearest_double(c);
+        double low = 0.0;
+        if (std::isnormal(high)) {
+            set_exact_double(part.get(), high);
+            fmpq_sub(remainder.get(), c, part.get());
+            const double error = std::abs(fmpq_get_d(remainder.get()) / high);
+            coefficient_error_ = std::max(coefficient_error_, error * (1.0 + 0x1.0p-50));
+            low = nearest_double(remainder.get());
+            if (low != 0.0) {
+                set_exact_double(part.get(), low);
+                fmpq_sub(remainder.get(), remainder.get(), part.get());
+            }
+            double_double_coefficient_error_ =
+                std::max(double_double_coefficient_error_,
+                         std::abs(fmpq_get_d(remainder.get()) / high) * (1.0 + 0x1.0p-50));
+        } else {
+            coefficient_error_ = INFINITY;
+            double_double_coefficient_error_ = INFINITY;
+        }
+        rounded.push_back(
+            {{high, static_cast<int>(e[0]), static_cast<int>(e[1]), static_cast<int>(e[2])}, low});
     }
-    std::sort(terms_.begin(), terms_.end(), [](const CompiledTerm& p, const CompiledTerm& q) {
-        return std::tie(p.ex, p.ey, p.ez) < std::tie(q.ex, q.ey, q.ez);
+    std::sort(rounded.begin(), rounded.end(), [](const Rounded& p, const Rounded& q) {
+        return std::tie(p.term.ex, p.term.ey, p.term.ez) <
+               std::tie(q.term.ex, q.term.ey, q.term.ez);
     });
-    for (std::size_t i = 0; i < terms_.size(); ++i) {
-        const CompiledTerm& t = terms_[i];
+    std::size_t longest_group = 0;
+    for (std::size_t i = 0; i < rounded.size(); ++i) {
+        const CompiledTerm& t = rounded[i].term;
+        terms_.push_back(t);
+        low_words_.push_back(rounded[i].low_word);
         if (groups_.empty() || groups_.back().ex != t.ex || groups_.back().ey != t.ey) {
             groups_.push_back(
                 {t.ex, t.ey, static_cast<double>(t.ex), static_cast<double>(t.ey), i, i});
         }
         groups_.back().end = i + 1;
+        longest_group = std::max(longest_group, groups_.back().end - groups_.back().begin);
         coefficients_.push_back(t.coefficient);
         z_slopes_.push_back(t.coefficient * t.ez);
         z_exponents_.push_back(t.ez);
     }
+    // Roundings any one term meets in enclose_on_line: the point (1 per factor) and the powers
+    // (1 per multiplication), at most 2·degree; c·z^ez, then ·y^ey and ·x^ex; the sum within its
+    // group and the sum of the groups.
+    double_double_depth_ =
+        2 * degree_ + 3 + static_cast<int>(longest_group) + static_cast<int>(groups_.size());
 }
 
 const std::string& CompiledPolynomial::equation() const {
@@ -148,6 +187,124 @@ Point3 CompiledPolynomial::gradient(const Point3& p) const {
         add_group(groups_[k], even_x, even_y, even_z);
     }
     return {even_x + odd_x, even_y + odd_y, even_z + odd_z};
+}
+
+namespace {
+
+// A double with a bound on its error (midpoint-radius arithmetic: for z = x·y,
+// e_z = |x|·e_y + (|y| + e_y)·e_x + u·|z|; for z = x + y, e_z = e_x + e_y + u·|z|).
+struct Ball {
+    double v, r;
+};
+inline Ball times(const Ball& a, const Ball& b) {
+    const double p = a.v * b.v;
+    return {p, std::abs(a.v) * b.r + (std::abs(b.v) + b.r) * a.r + 0x1.0p-53 * std::abs(p)};
+}
+inline void add_to(Ball& acc, const Ball& a) {
+    acc.v += a.v;
+    acc.r += a.r + 0x1.0p-53 * std::abs(acc.v);
+}
+
+}  // namespace
+
+ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& direction,
+                                                   double t, Precision precision) const {
+    if (precision == Precision::double_precision) {
+        // The point rounded once (an FMA), then every operation's rounding added to the
+        // radius as it happens; the radii, rounded to nearest themselves, are inflated by
+        // (1 + 2γ_N) at the end (each is a sum of products of positive numbers reached by at
+        // most N roundings), and the coefficients' own error adds ρ·Σ|terms|.
+        std::array<Ball, 3> point;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double x = std::fma(t, direction[axis], origin[axis]);
+            point[axis] = {x, 0x1.0p-53 * std::abs(x) * (1.0 + 0x1.0p-50) + 0x1.0p-1074};
+        }
+        using Powers = std::array<Ball, kMaxCompiledDegree + 1>;
+        Powers xs, ys, zs;
+        xs[0] = ys[0] = zs[0] = {1.0, 0.0};
+        for (int k = 1; k <= degree_; ++k) {
+            xs[k] = times(xs[k - 1], point[0]);
+            ys[k] = times(ys[k - 1], point[1]);
+            zs[k] = times(zs[k - 1], point[2]);
+        }
+        Ball sum{0.0, 0.0};
+        double scale = 0.0;  // Σ|c̃·x^a·y^b·z^c| (up to rounding), for the coefficients' error
+        for (const Group& g : groups_) {
+            Ball in_z{0.0, 0.0};
+            double scale_in_z = 0.0;
+            for (std::size_t i = g.begin; i < g.end; ++i) {
+                const Ball term = times({coefficients_[i], 0.0}, zs[z_exponents_[i]]);
+                add_to(in_z, term);
+                scale_in_z += std::abs(term.v) + term.r;
+            }
+            const Ball xy = times(xs[g.ex], ys[g.ey]);
+            add_to(sum, times(xy, in_z));
+            scale += (std::abs(xy.v) + xy.r) * scale_in_z;
+        }
+        const double n = double_double_depth_;
+        ValueEnclosure result;
+        result.value = sum.v;
+        result.radius = sum.r * (1.0 + 2.0 * n * 0x1.0p-53 / (1.0 - n * 0x1.0p-53)) +
+                        coefficient_error_ * scale * 1.01 + (n + 8.0) * 0x1.0p-1060;
+        if (!std::isfinite(sum.v) || !std::isfinite(result.radius)) {
+            result.radius = INFINITY;
+        }
+        return result;
+    }
+    using detail::DoubleDouble;
+    // The point's coordinates o_i + t·d_i, each within kOperationError of exact (one accurate
+    // double-double sum of exact parts), their magnitudes rounded up, and the power tables of
+    // both: the values in double-double, the magnitudes in double for the error bound.
+    std::array<DoubleDouble, 3> point;
+    std::array<double, 3> magnitude;
+    for (int axis = 0; axis < 3; ++axis) {
+        point[axis] = detail::from_double(origin[axis]) + detail::two_product(t, direction[axis]);
+        magnitude[axis] = std::abs(point[axis].hi) * (1.0 + 0x1.0p-51);
+    }
+    using DoublePowers = std::array<double, kMaxCompiledDegree + 1>;
+    using WidePowers = std::array<DoubleDouble, kMaxCompiledDegree + 1>;
+    WidePowers xs, ys, zs;
+    DoublePowers axs, ays, azs;
+    xs[0] = ys[0] = zs[0] = detail::from_double(1.0);
+    axs[0] = ays[0] = azs[0] = 1.0;
+    for (int k = 1; k <= degree_; ++k) {
+        xs[k] = xs[k - 1] * point[0];
+        ys[k] = ys[k - 1] * point[1];
+        zs[k] = zs[k - 1] * point[2];
+        axs[k] = axs[k - 1] * magnitude[0];
+        ays[k] = ays[k - 1] * magnitude[1];
+        azs[k] = azs[k - 1] * magnitude[2];
+    }
+    DoubleDouble sum;
+    double scale = 0.0;  // Σ |c̃|·|x|^a|y|^b|z|^c, up to the rounding of its own evaluation
+    for (const Group& g : groups_) {
+        DoubleDouble in_z;
+        double scale_in_z = 0.0;
+        for (std::size_t i = g.begin; i < g.end; ++i) {
+            in_z = in_z + DoubleDouble{coefficients_[i], low_words_[i]} * zs[z_exponents_[i]];
+            scale_in_z += std::abs(coefficients_[i]) * azs[z_exponents_[i]];
+        }
+        sum = sum + xs[g.ex] * ys[g.ey] * in_z;
+        scale += axs[g.ex] * ays[g.ey] * scale_in_z;
+    }
+    // Each term carries at most N = double_double_depth_ factors (1 + θ) with |θ| ≤
+    // kOperationError, so the evaluation errs by at most γ_N·Σ|terms| with
+    // γ_N = N·v/(1 − N·v); the coefficients' own rounding adds their relative error times the
+    // same sum. The magnitudes were evaluated in doubles with at most N + degree roundings;
+    // (1 + 4(N + degree)u) covers them, and the last term covers underflow (each operation may
+    // lose 2^-1074 when its result is subnormal).
+    const double n = double_double_depth_;
+    const double gamma = n * detail::kOperationError / (1.0 - n * detail::kOperationError);
+    const double bound_of_scale = scale * (1.0 + 4.0 * (n + degree_) * 0x1.0p-53);
+    ValueEnclosure result;
+    result.value = sum.hi;
+    result.value_low = sum.lo;
+    result.radius = (gamma + double_double_coefficient_error_) * bound_of_scale * 1.001 +
+                    (n + 8.0) * 0x1.0p-1060;
+    if (!std::isfinite(sum.hi) || !std::isfinite(sum.lo) || !std::isfinite(result.radius)) {
+        result.radius = INFINITY;
+    }
+    return result;
 }
 
 CompiledPolynomial compile_surface(std::string_view equation) {

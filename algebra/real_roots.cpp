@@ -22,6 +22,37 @@ void set_exact_double(fmpq_t out, double v) {
     }
 }
 
+double nearest_double(const fmpq_t t) {
+    const double guess = fmpq_get_d(t);
+    if (!std::isfinite(guess)) {
+        return guess;
+    }
+    double best = guess;
+    fmpq_t candidate, distance, best_distance;
+    fmpq_init(candidate);
+    fmpq_init(distance);
+    fmpq_init(best_distance);
+    set_exact_double(candidate, guess);
+    fmpq_sub(best_distance, candidate, t);
+    fmpq_abs(best_distance, best_distance);
+    for (const double other : {std::nextafter(guess, -INFINITY), std::nextafter(guess, INFINITY)}) {
+        if (!std::isfinite(other)) {
+            continue;
+        }
+        set_exact_double(candidate, other);
+        fmpq_sub(distance, candidate, t);
+        fmpq_abs(distance, distance);
+        if (fmpq_cmp(distance, best_distance) < 0) {
+            fmpq_swap(distance, best_distance);
+            best = other;
+        }
+    }
+    fmpq_clear(candidate);
+    fmpq_clear(distance);
+    fmpq_clear(best_distance);
+    return best;
+}
+
 namespace {
 
 // RAII holder for the FLINT polynomials used below (scalars are algebra::Rational).
@@ -112,35 +143,6 @@ void s_from_piece(fmpq_t s, const fmpz_t c, ulong k, const fmpq_t x) {
     fmpq_div_2exp(s, s, k);
 }
 
-// The double nearest to t (fmpq_get_d alone may round either way).
-double to_double(const fmpq_t t) {
-    const double guess = fmpq_get_d(t);
-    double best = guess;
-    fmpq_t candidate, distance, best_distance;
-    fmpq_init(candidate);
-    fmpq_init(distance);
-    fmpq_init(best_distance);
-    set_exact_double(candidate, guess);
-    fmpq_sub(best_distance, candidate, t);
-    fmpq_abs(best_distance, best_distance);
-    for (const double other : {std::nextafter(guess, -INFINITY), std::nextafter(guess, INFINITY)}) {
-        if (!std::isfinite(other)) {
-            continue;
-        }
-        set_exact_double(candidate, other);
-        fmpq_sub(distance, candidate, t);
-        fmpq_abs(distance, distance);
-        if (fmpq_cmp(distance, best_distance) < 0) {
-            fmpq_swap(distance, best_distance);
-            best = other;
-        }
-    }
-    fmpq_clear(candidate);
-    fmpq_clear(distance);
-    fmpq_clear(best_distance);
-    return best;
-}
-
 // Refines the single root of `poly` in (0, 1) (a sign change) by exact bisection until its
 // enclosure in t rounds to one or two adjacent doubles.
 double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
@@ -155,8 +157,8 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
         t_from_s(t_lower.get(), s.get(), lo, width);
         s_from_piece(s.get(), c, k, b.get());
         t_from_s(t_upper.get(), s.get(), lo, width);
-        const double lower = to_double(t_lower.get());
-        const double upper = to_double(t_upper.get());
+        const double lower = nearest_double(t_lower.get());
+        const double upper = nearest_double(t_upper.get());
         // Done when both ends round to the same double, or (a root on a rounding boundary)
         // when the enclosure is far below one ulp.
         fmpq_sub(mid.get(), t_upper.get(), t_lower.get());
@@ -164,7 +166,7 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
         if (lower == upper || std::abs(fmpq_get_d(mid.get())) < gap / 256) {
             fmpq_add(mid.get(), t_lower.get(), t_upper.get());
             fmpq_div_2exp(mid.get(), mid.get(), 1);
-            return to_double(mid.get());
+            return nearest_double(mid.get());
         }
         fmpq_add(mid.get(), a.get(), b.get());
         fmpq_div_2exp(mid.get(), mid.get(), 1);
@@ -173,7 +175,7 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
         if (sign_at_mid == 0) {
             s_from_piece(s.get(), c, k, mid.get());
             t_from_s(t_lower.get(), s.get(), lo, width);
-            return to_double(t_lower.get());
+            return nearest_double(t_lower.get());
         }
         if (sign_at_mid == sign_at_a) {
             fmpq_set(a.get(), mid.get());
@@ -185,7 +187,7 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
     // any interval of doubles below one ulp.
     s_from_piece(s.get(), c, k, a.get());
     t_from_s(t_lower.get(), s.get(), lo, width);
-    return to_double(t_lower.get());
+    return nearest_double(t_lower.get());
 }
 
 }  // namespace
@@ -215,7 +217,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
     }
     if (fmpz_is_zero(q.p->coeffs)) {
         if (!lo_open) {
-            return to_double(lo);
+            return nearest_double(lo);
         }
         fmpz_poly_shift_right(q.p, q.p, 1);  // square-free: the root at lo is simple
     }
@@ -238,7 +240,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
             fmpz_clear(numerator);
             fmpz_clear(denominator);
             t_from_s(t.get(), s.get(), lo, width.get());
-            return to_double(t.get());
+            return nearest_double(t.get());
         }
         if (fmpz_poly_degree(piece.poly.p) <= 0) {
             continue;
@@ -277,7 +279,7 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
         stack.push_back(left);
     }
     if (is_root_at_one(q.p)) {
-        return to_double(hi);
+        return nearest_double(hi);
     }
     return std::nullopt;
 }

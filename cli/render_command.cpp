@@ -218,7 +218,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--clip-radius", args->clip_radius,
                     "clip every surface to a sphere of this radius about the origin (default 2)");
     cmd->add_option("--method", args->method,
-                    "sturm (default) | bernstein | laguerre | eigen | sphere-gradient | "
+                    "certified (default) | sturm | bernstein | laguerre | eigen | "
+                    "sphere-gradient | "
                     "sphere-lipschitz | exact");
     cmd->add_option("--samples", args->samples, "N: N×N samples per pixel (default 1)");
     cmd->add_option("--shadows", args->shadows, "on (default) | off");

@@ -20,7 +20,7 @@ namespace {
 
 struct TraceArgs {
     std::string equation;
-    std::string method = "sturm";
+    std::string method = "certified";
     double t_max = 100.0;
 };
 
@@ -69,8 +69,8 @@ int run_trace(const TraceArgs& args) {
             throw CommandFailure(exit_input, "<stdin>: line " + std::to_string(line_number) +
                                                  ": the direction is zero");
         }
-        // t > 0: the smallest positive double is the first admissible parameter.
-        const render::Interval interval{std::numeric_limits<double>::denorm_min(), args.t_max};
+        // (0, t-max]: SurfaceTracer intervals are open at their start.
+        const render::Interval interval{0.0, args.t_max};
         const render::RootResult hit = tracer.first_hit(ray, interval);
         if (hit.status == render::RootStatus::hit) {
             std::printf("%.17g\n", hit.t);
@@ -92,7 +92,8 @@ void add_trace_command(CLI::App& app, int& exit_code) {
         "trace", "First hit of rays (stdin: ox oy oz dx dy dz) with the surface f = 0");
     cmd->add_option("equation", args->equation, "f(x, y, z)")->required();
     cmd->add_option("--method", args->method,
-                    "sturm (default) | bernstein | laguerre | eigen | sphere-gradient | "
+                    "certified (default) | sturm | bernstein | laguerre | eigen | "
+                    "sphere-gradient | "
                     "sphere-lipschitz | exact");
     cmd->add_option("--t-max", args->t_max, "search t in (0, T] (default 100)");
     cmd->callback([args, &exit_code] { exit_code = run_trace(*args); });

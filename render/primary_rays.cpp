@@ -7,7 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "render/ray_family.h"
+#include "render/primary_tracer.h"
 
 namespace locus::render {
 
@@ -21,34 +21,20 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
     result.ray_lengths.resize(pixels);
     const double scale = bounding_sphere(region).radius;
     // SurfaceTracer's scale sets only the sphere-tracing tolerances.
-    const SurfaceTracer tracer(f, method, scale * tolerance_factor);
-    const bool uses_family = method != TraceMethod::sphere_gradient &&
-                             method != TraceMethod::exact && f.degree() <= kMaxFamilyDegree;
-    const RayFamily family(f, camera, bounding_sphere(region).center, width, height);
+    const SurfaceTracer tracer(f, method, scale * tolerance_factor, kRenderTolerance);
+    const PrimaryTracer primary(f, camera, region, width, height, tracer);
     auto trace_row = [&](int y) {
-        RowExpansion row;
+        PrimaryTracer::Row row;
         const double image_y = y + 0.5;
-        if (uses_family) {
-            family.expand_row(image_y, row);
-        }
-        RayPolynomial restriction;
-        double previous_hit = NAN;  // the next pixel's hint
+        primary.begin_row(image_y, row);
         for (int x = 0; x < width; ++x) {
             const double image_x = x + 0.5;
             const Ray ray = camera.ray(image_x, image_y);
             const std::size_t p = static_cast<std::size_t>(y) * width + x;
             result.ray_lengths[p] = glm::length(ray.direction);
             const Interval interval = clip(region, ray, {0.0, INFINITY});
-            if (interval.is_empty()) {
-                result.hits[p] = {};
-                continue;
-            }
-            if (uses_family) {
-                RayFamily::restriction(row, image_x, restriction);
-            }
-            result.hits[p] = tracer.first_hit(ray, interval, uses_family ? &restriction : nullptr,
-                                              family.origin_t(), previous_hit);
-            previous_hit = result.hits[p].status == RootStatus::hit ? result.hits[p].t : NAN;
+            result.hits[p] =
+                interval.is_empty() ? RootResult{} : primary.first_hit(row, image_x, ray, interval);
         }
     };
     tbb::task_arena arena(threads > 0 ? threads : tbb::this_task_arena::max_concurrency());

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace locus::render {
 
@@ -10,32 +9,13 @@ RayFamily::RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
                      int width, int height)
     : camera_(&camera),
       restrictor_(f.terms()),
+      chebyshev_(restrictor_.degree()),
       plane_t_(glm::dot(center - camera.eye(), camera.forward())),
       center_x_(0.5 * width),
       half_width_(0.5 * width),
       center_y_(0.5 * height),
       half_height_(0.5 * height) {
     const int nodes = restrictor_.degree() + 1;
-    chebyshev_powers_.resize(static_cast<std::size_t>(nodes));
-    cosines_.resize(static_cast<std::size_t>(nodes));
-    for (int m = 0; m < nodes; ++m) {
-        auto& t = chebyshev_powers_[static_cast<std::size_t>(m)];
-        t.fill(0.0);
-        if (m <= 1) {
-            t[static_cast<std::size_t>(m)] = 1.0;  // T_0 = 1, T_1 = u
-        } else {
-            // T_m = 2u·T_{m−1} − T_{m−2}.
-            const auto& t1 = chebyshev_powers_[static_cast<std::size_t>(m - 1)];
-            const auto& t2 = chebyshev_powers_[static_cast<std::size_t>(m - 2)];
-            for (int i = 0; i <= m; ++i) {
-                t[i] = (i > 0 ? 2.0 * t1[i - 1] : 0.0) - t2[i];
-            }
-        }
-        for (int j = 0; j < nodes; ++j) {
-            cosines_[static_cast<std::size_t>(m)][j] =
-                std::cos(std::numbers::pi * m * (j + 0.5) / nodes);
-        }
-    }
     if (restrictor_.degree() < 0 || restrictor_.degree() > kMaxFamilyDegree) {
         return;  // above kMaxFamilyDegree rows are expanded directly (if at all)
     }
@@ -43,35 +23,15 @@ RayFamily::RayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
     const auto n_nodes = static_cast<std::size_t>(nodes);
     std::vector<RowExpansion> rows(n_nodes);
     for (int j = 0; j < nodes; ++j) {
-        expand_row_directly(center_y_ + node(j) * half_height_, rows[static_cast<std::size_t>(j)]);
+        expand_row_directly(center_y_ + chebyshev_.node(j) * half_height_,
+                            rows[static_cast<std::size_t>(j)]);
     }
     by_v_.assign(n_nodes * n_nodes * n_nodes, 0.0);
     for (int k = 0; k < nodes; ++k) {
         for (int i = 0; i < nodes; ++i) {
-            interpolate([&](int j) { return rows[static_cast<std::size_t>(j)].row[k][i]; },
-                        by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes);
-        }
-    }
-}
-
-double RayFamily::node(int j) const {
-    return restrictor_.degree() > 0 ? cosines_[1][static_cast<std::size_t>(j)] : 0.0;
-}
-
-template <class ValueAtNode>
-void RayFamily::interpolate(ValueAtNode value_at_node, double* power) const {
-    const int nodes = restrictor_.degree() + 1;
-    std::fill_n(power, nodes, 0.0);
-    for (int m = 0; m < nodes; ++m) {
-        const auto& cosine = cosines_[static_cast<std::size_t>(m)];
-        double chebyshev = 0.0;
-        for (int j = 0; j < nodes; ++j) {
-            chebyshev += value_at_node(j) * cosine[j];
-        }
-        chebyshev *= (m == 0 ? 1.0 : 2.0) / nodes;
-        const auto& t = chebyshev_powers_[static_cast<std::size_t>(m)];
-        for (int e = 0; e <= m; ++e) {
-            power[e] += chebyshev * t[e];
+            chebyshev_.interpolate(
+                [&](int j) { return rows[static_cast<std::size_t>(j)].row[k][i]; },
+                by_v_.data() + (static_cast<std::size_t>(k) * n_nodes + i) * n_nodes);
         }
     }
 }
@@ -108,12 +68,12 @@ void RayFamily::expand_row_directly(double y, RowExpansion& out) const {
     // values[j]: the restriction along the ray at node u_j.
     std::array<RayPolynomial, kMaxDegree + 1> values;
     for (int j = 0; j <= n; ++j) {
-        const Vec3 d = camera_->direction(center_x_ + node(j) * half_width_, y);
+        const Vec3 d = camera_->direction(center_x_ + chebyshev_.node(j) * half_width_, y);
         values[j] = restrictor_.restrict_to(camera_->eye() + plane_t_ * d, d);
     }
     for (int k = 0; k <= n; ++k) {
-        interpolate([&](int j) { return values[static_cast<std::size_t>(j)].c[k]; },
-                    out.row[k].data());
+        chebyshev_.interpolate([&](int j) { return values[static_cast<std::size_t>(j)].c[k]; },
+                               out.row[k].data());
     }
 }
 

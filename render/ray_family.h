@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "render/camera.h"
+#include "render/detail/chebyshev_interpolation.h"
 #include "render/ray_restriction.h"
 
 namespace locus::render {
@@ -61,16 +62,9 @@ class RayFamily {
   private:
     const Camera* camera_;
     LineRestrictor restrictor_;
+    detail::ChebyshevInterpolation chebyshev_;
     double plane_t_;
     double center_x_, half_width_;
-    // Tables for interpolating at the Chebyshev nodes u_j = cos(π(j + ½)/(n + 1)), computed
-    // once per frame: cosines_[m][j] = cos(π·m·(j + ½)/(n + 1)) for the discrete cosine
-    // transform to Chebyshev coefficients c_m, and chebyshev_powers_[m][i], the coefficient of u^i
-    // in T_m. The two steps are kept apart rather than fused into one node-to-power matrix:
-    // summing c_m·T_m lets the small high-order c_m meet the large coefficients of T_m, while
-    // the fused matrix sums large terms of both signs (20× the distance error at degree 12).
-    std::vector<std::array<double, kMaxDegree + 1>> cosines_;
-    std::vector<std::array<double, kMaxDegree + 1>> chebyshev_powers_;
     // The row coefficients as polynomials in v = (y − centre)/half-height ∈ [−1, 1]: H_k is a
     // polynomial of degree ≤ n in (x, y) together, so each coefficient of u^i in H_k has degree
     // ≤ n in v, interpolated once per frame from n + 1 rows at Chebyshev nodes (the same two
@@ -81,13 +75,6 @@ class RayFamily {
     std::vector<double> by_v_;
     // The row at y by restricting f along n + 1 rays of it (the frame's interpolation nodes).
     void expand_row_directly(double y, RowExpansion& out) const;
-    // Chebyshev node j in [−1, 1] (0 for a constant f).
-    double node(int j) const;
-    // power[0..n]: the coefficients, in powers of the node variable, of the polynomial of
-    // degree ≤ n through value_at_node(j) at the n + 1 nodes (discrete cosine transform to
-    // Chebyshev coefficients, then to powers: see chebyshev_powers_).
-    template <class ValueAtNode>
-    void interpolate(ValueAtNode value_at_node, double* power) const;
 };
 
 }  // namespace locus::render

@@ -1,6 +1,7 @@
 #include "render/ray_restriction.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace locus::render {
@@ -8,7 +9,8 @@ namespace locus::render {
 LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms) {
     std::map<int, std::map<int, std::vector<ZTerm>>> grouped;
     for (const algebra::CompiledTerm& term : terms) {
-        grouped[term.ex][term.ey].push_back({term.ez, term.coefficient});
+        grouped[term.ex][term.ey].push_back(
+            {term.ez, term.coefficient, std::abs(term.coefficient)});
         degree_ = std::max(degree_, term.ex + term.ey + term.ez);
         max_exponent_ = std::max({max_exponent_, term.ex, term.ey, term.ez});
     }
@@ -24,64 +26,185 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms) {
         }
         x_groups_.push_back(std::move(x_group));
     }
+    // Roundings on any one path of restrict_to: a power (o + t·d)^e takes two per factor (a
+    // product and a sum), 2·degree in all; then c·z-power, y-power·(z-sum) and x-power·(yz-sum)
+    // one each; and the three running sums, a chain as long as the contributions they collect
+    // (the z-terms of a y-group; Σ(ey + 1) over an x-group's y-groups; Σ(ex + 1) over the
+    // x-groups).
+    int longest_z = 0, longest_yz = 0, x_sum = 0;
+    for (const XGroup& x_group : x_groups_) {
+        int yz_sum = 0;
+        for (const YGroup& y_group : x_group.y_groups) {
+            longest_z = std::max(longest_z, static_cast<int>(y_group.z_terms.size()));
+            yz_sum += y_group.ey + 1;
+        }
+        longest_yz = std::max(longest_yz, yz_sum);
+        x_sum += x_group.ex + 1;
+    }
+    rounding_depth_ = 2 * std::max(degree_, 0) + 3 + longest_z + longest_yz + x_sum;
 }
 
 namespace {
-
-// Powers (o + t·d)^k for k ≤ n as coefficient rows: row k has k + 1 coefficients.
-using PowerTable = std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1>;
-
-void fill_powers(PowerTable& table, int n, double o, double d) {
-    table[0][0] = 1.0;
-    for (int k = 1; k <= n; ++k) {
-        const auto& previous = table[k - 1];
-        auto& row = table[k];
-        row[0] = previous[0] * o;
-        for (int j = 1; j < k; ++j) {
-            row[j] = previous[j] * o + previous[j - 1] * d;
-        }
-        row[k] = previous[k - 1] * d;
-    }
-}
-
+constexpr double kUnit = 0x1.0p-53;
 }  // namespace
+
+// The scalars of LineRestrictor::expand. `Plain` is a double. `Ball` is a double with a bound
+// on its error, propagated by the running error analysis of each operation (midpoint-radius
+// arithmetic, as in Rump's INTLAB and Johansson's Arb): for z = x·y,
+// e_z = |x|·e_y + (|y| + e_y)·e_x + u·|z|; for z = x + y, e_z = e_x + e_y + u·|z|. The radii
+// are themselves rounded to nearest; restrict_with_bounds inflates the final ones by
+// (1 + 2γ_N) to cover that (every radius is a sum of products of positive numbers, reached by
+// at most N = rounding_depth() roundings).
+struct Plain {
+    double v;
+    static Plain zero() { return {0.0}; }
+    static Plain one() { return {1.0}; }
+    static Plain of(double value, double) { return {value}; }
+    friend Plain operator*(const Plain& a, const Plain& b) { return {a.v * b.v}; }
+    // acc + a·b
+    static void multiply_add(Plain& acc, const Plain& a, const Plain& b) { acc.v += a.v * b.v; }
+    static Plain sum_of_products(const Plain& a, const Plain& b, const Plain& c, const Plain& d) {
+        return {a.v * b.v + c.v * d.v};
+    }
+};
+
+struct Ball {
+    double v, r;
+    static Ball zero() { return {0.0, 0.0}; }
+    static Ball one() { return {1.0, 0.0}; }
+    static Ball of(double value, double radius) { return {value, radius}; }
+    friend Ball operator*(const Ball& a, const Ball& b) {
+        const double p = a.v * b.v;
+        return {p, std::abs(a.v) * b.r + (std::abs(b.v) + b.r) * a.r + kUnit * std::abs(p)};
+    }
+    static void multiply_add(Ball& acc, const Ball& a, const Ball& b) {
+        const double p = a.v * b.v;
+        acc.v += p;
+        acc.r += std::abs(a.v) * b.r + (std::abs(b.v) + b.r) * a.r +
+                 kUnit * (std::abs(p) + std::abs(acc.v));
+    }
+    static Ball sum_of_products(const Ball& a, const Ball& b, const Ball& c, const Ball& d) {
+        Ball z = a * b;
+        multiply_add(z, c, d);
+        return z;
+    }
+};
 
 RayPolynomial LineRestrictor::restrict_to(const Vec3& origin, const Vec3& direction) const {
     RayPolynomial result;
     result.degree = degree_;
-    if (degree_ < 0) {
-        return result;
+    std::array<Plain, kMaxDegree + 1> c;
+    expand(origin, {0.0, 0.0, 0.0}, direction, {0.0, 0.0, 0.0}, 0.0, false, c);
+    for (int k = 0; k <= degree_; ++k) {
+        result.c[k] = c[k].v;
     }
-    PowerTable xs, ys, zs;
-    fill_powers(xs, max_exponent_, origin.x, direction.x);
-    fill_powers(ys, max_exponent_, origin.y, direction.y);
-    fill_powers(zs, max_exponent_, origin.z, direction.z);
-    std::array<double, kMaxDegree + 1> in_z, in_yz;
+    return result;
+}
+
+RestrictionBall LineRestrictor::restrict_with_bounds(const Vec3& origin, const Vec3& direction,
+                                                     const LineError& error,
+                                                     double coefficient_error) const {
+    std::array<Ball, kMaxDegree + 1> c;
+    expand(origin, error.origin, direction, error.direction, coefficient_error, false, c);
+    const double n = rounding_depth_;
+    const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
+    RestrictionBall ball;
+    ball.polynomial.degree = degree_;
+    ball.certified = std::isfinite(coefficient_error);
+    for (int k = 0; k <= degree_; ++k) {
+        ball.polynomial.c[k] = c[k].v;
+        ball.radius[k] = c[k].r * inflate + (n + 8.0) * 0x1.0p-1060;
+        ball.certified = ball.certified && std::isfinite(ball.radius[k]) && std::isfinite(c[k].v);
+    }
+    if (!ball.certified) {
+        ball.radius.fill(INFINITY);
+    }
+    return ball;
+}
+
+RestrictionBall LineRestrictor::restrict_with_relative_bounds(const Vec3& origin,
+                                                              const Vec3& direction,
+                                                              double input_error,
+                                                              double coefficient_error) const {
+    LineError error;
+    error.origin = glm::abs(origin) * input_error;
+    error.direction = glm::abs(direction) * input_error;
+    return restrict_with_bounds(origin, direction, error, coefficient_error);
+}
+
+std::array<double, kMaxDegree + 1> LineRestrictor::growth_bound(const Vec3& origin_magnitude,
+                                                                const Vec3& direction_magnitude,
+                                                                const LineError& error) const {
+    // The magnitudes' expansion in balls: with every input and coefficient positive, the
+    // radius bounds S(M + δ) − S(M) (and S(M)'s own rounding).
+    std::array<Ball, kMaxDegree + 1> c;
+    expand(origin_magnitude, error.origin, direction_magnitude, error.direction, 0.0, true, c);
+    const double n = rounding_depth_;
+    const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
+    std::array<double, kMaxDegree + 1> growth{};
+    for (int k = 0; k <= degree_; ++k) {
+        growth[k] = std::isfinite(c[k].r) ? c[k].r * inflate + (n + 8.0) * 0x1.0p-1060 : INFINITY;
+    }
+    return growth;
+}
+
+template <class Scalar>
+void LineRestrictor::expand(const Vec3& origin, const Vec3& origin_error, const Vec3& direction,
+                            const Vec3& direction_error, double coefficient_error, bool magnitudes,
+                            std::array<Scalar, kMaxDegree + 1>& result) const {
+    for (int k = 0; k <= std::max(degree_, 0); ++k) {
+        result[k] = Scalar::zero();
+    }
+    if (degree_ < 0) {
+        return;
+    }
+    // Powers (o + t·d)^k for k ≤ max exponent as coefficient rows: row k has k + 1
+    // coefficients, row[j] = previous[j]·o + previous[j − 1]·d.
+    using PowerTable = std::array<std::array<Scalar, kMaxDegree + 1>, kMaxDegree + 1>;
+    PowerTable powers[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        const Scalar o = Scalar::of(origin[axis], origin_error[axis]);
+        const Scalar d = Scalar::of(direction[axis], direction_error[axis]);
+        PowerTable& table = powers[axis];
+        table[0][0] = Scalar::one();
+        for (int k = 1; k <= max_exponent_; ++k) {
+            const auto& previous = table[k - 1];
+            auto& row = table[k];
+            row[0] = previous[0] * o;
+            for (int j = 1; j < k; ++j) {
+                row[j] = Scalar::sum_of_products(previous[j], o, previous[j - 1], d);
+            }
+            row[k] = previous[k - 1] * d;
+        }
+    }
+    const PowerTable &xs = powers[0], &ys = powers[1], &zs = powers[2];
+    std::array<Scalar, kMaxDegree + 1> in_z, in_yz;
     for (const XGroup& x_group : x_groups_) {
-        std::fill_n(in_yz.begin(), x_group.max_yz + 1, 0.0);
+        std::fill_n(in_yz.begin(), x_group.max_yz + 1, Scalar::zero());
         for (const YGroup& y_group : x_group.y_groups) {
-            std::fill_n(in_z.begin(), y_group.max_ez + 1, 0.0);
+            std::fill_n(in_z.begin(), y_group.max_ez + 1, Scalar::zero());
             for (const ZTerm& z : y_group.z_terms) {
                 const auto& power = zs[z.ez];
+                const Scalar coefficient = Scalar::of(magnitudes ? z.magnitude : z.coefficient,
+                                                      z.magnitude * coefficient_error);
                 for (int j = 0; j <= z.ez; ++j) {
-                    in_z[j] += z.coefficient * power[j];
+                    Scalar::multiply_add(in_z[j], coefficient, power[j]);
                 }
             }
             const auto& y_power = ys[y_group.ey];
             for (int i = 0; i <= y_group.ey; ++i) {
                 for (int j = 0; j <= y_group.max_ez; ++j) {
-                    in_yz[i + j] += y_power[i] * in_z[j];
+                    Scalar::multiply_add(in_yz[i + j], y_power[i], in_z[j]);
                 }
             }
         }
         const auto& x_power = xs[x_group.ex];
         for (int i = 0; i <= x_group.ex; ++i) {
             for (int j = 0; j <= x_group.max_yz; ++j) {
-                result.c[i + j] += x_power[i] * in_yz[j];
+                Scalar::multiply_add(result[i + j], x_power[i], in_yz[j]);
             }
         }
     }
-    return result;
 }
 
 }  // namespace locus::render

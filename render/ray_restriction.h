@@ -7,6 +7,7 @@
 // costs O(#terms · degree) plus small convolutions, never a full symbolic expansion.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,22 @@
 #include "render/vec3.h"
 
 namespace locus::render {
+
+// A restriction known only up to rounding: the exact coefficient k lies in
+// [c[k] − radius[k], c[k] + radius[k]]. `certified` is false when no finite bound could be
+// given (overflow, a coefficient of f outside the normal doubles); the radii are then +∞.
+struct RestrictionBall {
+    RayPolynomial polynomial;
+    std::array<double, kMaxDegree + 1> radius{};
+    bool certified = false;
+};
+
+// Where the exact line lies, componentwise, about the doubles a restriction is computed from:
+// |exact origin − origin| ≤ origin_error, and likewise for the direction.
+struct LineError {
+    Vec3 origin{0.0};
+    Vec3 direction{0.0};
+};
 
 class LineRestrictor {
   public:
@@ -26,10 +43,35 @@ class LineRestrictor {
     // vanish for particular lines).
     RayPolynomial restrict_to(const Vec3& origin, const Vec3& direction) const;
 
+    // The same with a rigorous radius for every coefficient, for the exact f (whose
+    // coefficients lie within `coefficient_error`, relative, of the compiled ones: see
+    // CompiledPolynomial::coefficient_error) along any line within `error` of the given one:
+    // midpoint-radius arithmetic, each operation's rounding added to its radius as it happens
+    // (a running error bound: about u·Σ|partial results|, where the a-priori bound γ_N·Σ|terms|
+    // was 10–100 times larger on the degree-12 suite surface).
+    RestrictionBall restrict_with_bounds(const Vec3& origin, const Vec3& direction,
+                                         const LineError& error, double coefficient_error) const;
+    // The same when the given origin and direction are within a factor (1 ± input_error) of
+    // the exact line's, componentwise (each rounded once or twice from exact data).
+    RestrictionBall restrict_with_relative_bounds(const Vec3& origin, const Vec3& direction,
+                                                  double input_error,
+                                                  double coefficient_error) const;
+    // For every line whose origin and direction are componentwise at most `origin_magnitude`
+    // and `direction_magnitude` in absolute value: a bound, per coefficient, on how much its
+    // restriction changes when the line moves by at most `error` — S(M + δ) − S(M) for the
+    // magnitudes S(M) = Σ|c|·(M_o + s·M_d)^… (an increment of a polynomial with positive
+    // coefficients grows with the point it is taken at).
+    std::array<double, kMaxDegree + 1> growth_bound(const Vec3& origin_magnitude,
+                                                    const Vec3& direction_magnitude,
+                                                    const LineError& error) const;
+    // The most roundings any term meets in restrict_to (see the .cpp).
+    int rounding_depth() const { return rounding_depth_; }
+
   private:
     struct ZTerm {
         int ez;
         double coefficient;
+        double magnitude;  // |coefficient|
     };
     struct YGroup {
         int ey;
@@ -44,6 +86,15 @@ class LineRestrictor {
     std::vector<XGroup> x_groups_;
     int degree_ = -1;
     int max_exponent_ = 0;
+    int rounding_depth_ = 0;
+
+    // The expansion itself, in Plain doubles or in Balls (ray_restriction.cpp) that carry
+    // the inputs' errors and every rounding's.
+    // With `magnitudes`, the coefficients are replaced by their absolute values.
+    template <class Scalar>
+    void expand(const Vec3& origin, const Vec3& origin_error, const Vec3& direction,
+                const Vec3& direction_error, double coefficient_error, bool magnitudes,
+                std::array<Scalar, kMaxDegree + 1>& result) const;
 };
 
 }  // namespace locus::render

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "render/detail/image_rows.h"
-#include "render/ray_family.h"
+#include "render/primary_tracer.h"
 #include "render/shading.h"
 
 namespace locus::render {
@@ -19,23 +19,19 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         scale = std::max(scale, bounding_sphere(surface.clip).radius);
     }
     std::vector<SurfaceTracer> tracers;
-    std::vector<RayFamily> families;
     std::vector<ShadedSurface> shaded;
     tracers.reserve(surfaces.size());
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
-        tracers.emplace_back(surfaces[i], scene.options.method, scale);
-        families.emplace_back(surfaces[i], camera, bounding_sphere(scene.surfaces[i].clip).center,
-                              scene.width, scene.height);
+        tracers.emplace_back(surfaces[i], scene.options.method, scale, kRenderTolerance);
     }
+    std::vector<PrimaryTracer> primaries;
+    primaries.reserve(surfaces.size());
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        primaries.emplace_back(surfaces[i], camera, scene.surfaces[i].clip, scene.width,
+                               scene.height, tracers[i]);
         shaded.push_back({&tracers[i], scene.surfaces[i].clip, scene.surfaces[i].material});
     }
     const Shader shader(shaded, lights, scene.options, scale);
-    bool uses_family = scene.options.method != TraceMethod::sphere_gradient &&
-                       scene.options.method != TraceMethod::exact;
-    for (const algebra::CompiledPolynomial& f : surfaces) {
-        uses_family = uses_family && f.degree() <= kMaxFamilyDegree;
-    }
 
     RenderedImage image = detail::blank_image(scene.width, scene.height, execution.aovs);
     const std::size_t pixels = static_cast<std::size_t>(scene.width) * scene.height;
@@ -44,21 +40,16 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     detail::FrameCounters frame;
 
     auto render_row = [&](int y) {
-        std::vector<RowExpansion> rows(surfaces.size());
+        std::vector<PrimaryTracer::Row> rows(surfaces.size());
         long row_hits = 0, row_unknown = 0, row_work = 0;
         std::vector<Vec3> sums(static_cast<std::size_t>(scene.width), Vec3(0.0));
         std::vector<double> nearest(static_cast<std::size_t>(scene.width), INFINITY);
         std::vector<Vec3> normals(static_cast<std::size_t>(scene.width), Vec3(0.0));
         std::vector<int> work(static_cast<std::size_t>(scene.width), 0);
-        std::vector<RayPolynomial> restrictions(surfaces.size());  // one per surface
-        // Per surface, its last hit along the row: the hint for the next sample.
-        std::vector<double> previous_hit(surfaces.size(), NAN);
         for (int sy = 0; sy < k; ++sy) {
             const double image_y = y + (sy + 0.5) / k;
-            if (uses_family) {
-                for (std::size_t s = 0; s < surfaces.size(); ++s) {
-                    families[s].expand_row(image_y, rows[s]);
-                }
+            for (std::size_t s = 0; s < surfaces.size(); ++s) {
+                primaries[s].begin_row(image_y, rows[s]);
             }
             for (int x = 0; x < scene.width; ++x) {
                 const auto column = static_cast<std::size_t>(x);
@@ -72,14 +63,8 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         if (interval.is_empty()) {
                             continue;
                         }
-                        RayPolynomial& restriction = restrictions[s];
-                        if (uses_family) {
-                            RayFamily::restriction(rows[s], image_x, restriction);
-                        }
-                        const RootResult hit = tracers[s].first_hit(
-                            ray, interval, uses_family ? &restriction : nullptr,
-                            families[s].origin_t(), previous_hit[s]);
-                        previous_hit[s] = hit.status == RootStatus::hit ? hit.t : NAN;
+                        const RootResult hit =
+                            primaries[s].first_hit(rows[s], image_x, ray, interval);
                         row_work += hit.work;
                         work[column] += hit.work;
                         if (hit.status == RootStatus::unknown) {

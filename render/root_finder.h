@@ -46,11 +46,16 @@ inline constexpr const char* kNearCommonFactor =
     "near-common factor of F and F' (multiple or very close roots)";
 inline constexpr const char* kSecondOpinion = "high degree";
 
+// Which arithmetic settled a certified answer (render/certified_tracer.h); `floating` for the
+// uncertified methods.
+enum class Decision : unsigned char { floating, double_double, exact };
+
 struct RootResult {
     RootStatus status = RootStatus::miss;
     double t = 0.0;           // the root when status == hit
     int work = 0;             // method-specific units of effort (see above)
     const char* reason = "";  // why, when status == unknown (a static string)
+    Decision decided_by = Decision::floating;
 };
 
 // A root finder: `first_root(F, lo, hi)` with lo < hi finite.

@@ -46,7 +46,7 @@ struct Surface {
 };
 
 struct RenderOptions {
-    TraceMethod method = TraceMethod::sturm;
+    TraceMethod method = TraceMethod::certified;
     int samples = 1;  // samples × samples per pixel
     bool shadows = true;
     int soft_shadow_samples = 8;  // shadow rays per light when its radius is non-zero

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "algebra/compiled.h"
+#include "render/certified_tracer.h"
 #include "render/ray_restriction.h"
 #include "render/root_finder.h"
 #include "render/trace_method.h"
@@ -22,8 +23,10 @@ namespace locus::render {
 class SurfaceTracer {
   public:
     // `scale`: the size of the scene (a clip radius), which sets the sphere-tracing tolerances.
+    // `tolerance`: the relative accuracy of a certified hit (CertifiedTracer).
     // The polynomial must outlive the tracer.
-    SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod method, double scale);
+    SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod method, double scale,
+                  double tolerance = kTraceTolerance);
 
     TraceMethod method() const { return method_; }
     const algebra::CompiledPolynomial& polynomial() const { return *f_; }
@@ -39,15 +42,24 @@ class SurfaceTracer {
                          double restriction_origin = 0.0,
                          double hint = std::numeric_limits<double>::quiet_NaN()) const;
 
+    // For the certified method: the ray's ball from a CertifiedRayFamily, the restriction to
+    // [t_start, t_start + t_width] (CertifiedTracer::first_hit_from).
+    RootResult first_hit_from(const BernsteinBall& ball, double t_start, double t_width,
+                              const Ray& ray, Interval interval) const {
+        return certified_.first_hit_from(ball, t_start, t_width, ray, interval, tolerance_);
+    }
+
   private:
     RootResult on_restriction(const RayPolynomial& restriction, double origin, Interval interval,
                               const Ray& ray, double hint) const;
 
     const algebra::CompiledPolynomial* f_;
     LineRestrictor restrictor_;
+    CertifiedTracer certified_;
     TraceMethod method_;
     AnyRootFinder finder_;
     double scale_;
+    double tolerance_;
 };
 
 }  // namespace locus::render

@@ -8,10 +8,10 @@
 namespace locus::render {
 
 namespace {
-constexpr std::array<TraceMethod, 7> kMethods = {
-    TraceMethod::sturm, TraceMethod::bernstein,       TraceMethod::laguerre,
-    TraceMethod::eigen, TraceMethod::sphere_gradient, TraceMethod::sphere_lipschitz,
-    TraceMethod::exact};
+constexpr std::array<TraceMethod, 8> kMethods = {
+    TraceMethod::certified,        TraceMethod::sturm, TraceMethod::bernstein,
+    TraceMethod::laguerre,         TraceMethod::eigen, TraceMethod::sphere_gradient,
+    TraceMethod::sphere_lipschitz, TraceMethod::exact};
 }  // namespace
 
 std::span<const TraceMethod> all_trace_methods() {
@@ -20,6 +20,8 @@ std::span<const TraceMethod> all_trace_methods() {
 
 std::string_view to_string(TraceMethod method) {
     switch (method) {
+    case TraceMethod::certified:
+        return "certified";
     case TraceMethod::sturm:
         return "sturm";
     case TraceMethod::bernstein:

@@ -9,6 +9,8 @@
 namespace locus::render {
 
 enum class TraceMethod {
+    certified,         // the default: rigorous error bounds in doubles, then double-double, then
+                       // exact arithmetic (render/certified_tracer.h)
     sturm,             // Sturm isolation on F(t), then bracketed Halley
     bernstein,         // Descartes/Bernstein subdivision on F(t)
     laguerre,          // Laguerre with deflation on F(t), polished
@@ -21,8 +23,8 @@ enum class TraceMethod {
 // Whether a sphere-tracing distance is guaranteed never to step past the surface.
 enum class BoundKind { bound, estimate };
 
-// "sturm", "bernstein", "laguerre", "eigen", "sphere-gradient", "sphere-lipschitz", "exact";
-// anything else is an InputError that lists the valid names.
+// "certified", "sturm", "bernstein", "laguerre", "eigen", "sphere-gradient", "sphere-lipschitz",
+// "exact"; anything else is an InputError that lists the valid names.
 TraceMethod parse_trace_method(std::string_view name);
 std::string_view to_string(TraceMethod method);
 std::span<const TraceMethod> all_trace_methods();

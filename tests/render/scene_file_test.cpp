@@ -23,7 +23,7 @@ TEST(SceneFile, MinimalSceneTakesTheDefaults) {
     const Scene scene = parse_scene("[[surface]]\nequation = \"x^2+y^2+z^2-1\"\n");
     ASSERT_EQ(scene.surfaces.size(), 1u);
     EXPECT_EQ(scene.width, 512);
-    EXPECT_EQ(scene.options.method, TraceMethod::sturm);
+    EXPECT_EQ(scene.options.method, TraceMethod::certified);
     EXPECT_FALSE(scene.camera.has_value());
     EXPECT_TRUE(scene.lights.empty());
     ASSERT_TRUE(std::holds_alternative<ClipSphere>(scene.surfaces[0].clip));
@@ -89,9 +89,11 @@ TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
     EXPECT_EQ(error_of("[camera]\neye = [1, 2]\n[[surface]]\nequation = \"x\"\n"),
               "line 2, column 7: camera.eye: expected an array of three numbers, found an array "
               "of 2");
-    EXPECT_EQ(error_of("[render]\nmethod = \"magic\"\n[[surface]]\nequation = \"x\"\n"),
-              "method 'magic': unknown method; expected one of sturm, bernstein, laguerre, eigen, "
-              "sphere-gradient, sphere-lipschitz, exact");
+    EXPECT_EQ(
+        error_of("[render]\nmethod = \"magic\"\n[[surface]]\nequation = \"x\"\n"),
+        "method 'magic': unknown method; expected one of certified, sturm, bernstein, laguerre, "
+        "eigen, "
+        "sphere-gradient, sphere-lipschitz, exact");
     EXPECT_EQ(error_of("[image]\nwidth = 10\n"),
               "surface: a scene needs at least one [[surface]] or [[object]]");
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\nparam = \"a.param\"\n"),

@@ -1,0 +1,228 @@
+#include "render/bernstein_ball.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace locus::render {
+
+namespace {
+
+constexpr double kUnit = 0x1.0p-53;
+
+// γ_k = k·u/(1 − k·u), the bound on k roundings.
+double gamma(int k) {
+    return k * kUnit / (1.0 - k * kUnit);
+}
+
+// What a subnormal result may lose per rounding, summed over every rounding of a kernel below
+// (at most 3·41² of them): covers underflow, which the relative bounds do not.
+constexpr double kUnderflow = 0x1.0p-1040;
+
+// Binomial coefficients C(n, k) for n ≤ kMaxDegree, exact (C(40, 20) < 2^53).
+struct Binomials {
+    std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> c{};
+    Binomials() {
+        for (int n = 0; n <= kMaxDegree; ++n) {
+            c[n][0] = c[n][n] = 1.0;
+            for (int k = 1; k < n; ++k) {
+                c[n][k] = c[n - 1][k - 1] + c[n - 1][k];
+            }
+        }
+    }
+};
+const Binomials& binomials() {
+    static const Binomials table;
+    return table;
+}
+
+}  // namespace
+
+namespace {
+
+// β[n][i][k]: Bernstein coefficient i (degree n, on [−1, 1]) of x^k, i.e. x^k =
+// Σ_i β_ik·C(n, i)·((1 − x)/2)^(n − i)·((1 + x)/2)^i, for n ≤ kMaxDegree:
+//     β_ik = Σ_j C(i, j)·C(n − i, k − j)·(−1)^(k − j) / C(n, k),
+// the sum exact in 128-bit integers (C(40, 20)² < 2^75) and the quotient rounded once. Every
+// |β_ik| ≤ 1 (x^k lies in [−1, 1]), so converting a ball does not magnify its radii.
+__extension__ using Int128 = __int128;  // GCC's 128-bit integers (not ISO C++)
+
+struct CenteredWeights {
+    std::vector<std::vector<double>> by_degree;  // [n][i·(n + 1) + k]
+    CenteredWeights() {
+        std::array<std::array<long long, kMaxDegree + 1>, kMaxDegree + 1> c{};
+        for (int n = 0; n <= kMaxDegree; ++n) {
+            c[n][0] = c[n][n] = 1;
+            for (int k = 1; k < n; ++k) {
+                c[n][k] = c[n - 1][k - 1] + c[n - 1][k];
+            }
+        }
+        by_degree.resize(kMaxDegree + 1);
+        for (int n = 0; n <= kMaxDegree; ++n) {
+            auto& table = by_degree[n];
+            table.assign(static_cast<std::size_t>((n + 1) * (n + 1)), 0.0);
+            for (int i = 0; i <= n; ++i) {
+                for (int k = 0; k <= n; ++k) {
+                    Int128 sum = 0;
+                    for (int j = std::max(0, k - (n - i)); j <= std::min(i, k); ++j) {
+                        const Int128 term = static_cast<Int128>(c[i][j]) * c[n - i][k - j];
+                        sum += (k - j) % 2 == 0 ? term : -term;
+                    }
+                    table[static_cast<std::size_t>(i * (n + 1) + k)] = static_cast<double>(
+                        static_cast<long double>(sum) / static_cast<long double>(c[n][k]));
+                }
+            }
+        }
+    }
+};
+
+const CenteredWeights& centered_weights() {
+    static const CenteredWeights weights;
+    return weights;
+}
+
+}  // namespace
+
+BernsteinBall to_bernstein(const RestrictionBall& g) {
+    BernsteinBall out;
+    const int n = g.polynomial.degree;
+    out.degree = n;
+    if (n < 0) {
+        return out;
+    }
+    const std::vector<double>& beta = centered_weights().by_degree[static_cast<std::size_t>(n)];
+    // Every term meets at most n + 4 roundings: the weight's (and the long double quotient's),
+    // the product, the running sum.
+    const double rounding = gamma(n + 4);
+    for (int i = 0; i <= n; ++i) {
+        double value = 0.0, radius = 0.0;
+        const double* row = beta.data() + static_cast<std::size_t>(i * (n + 1));
+        for (int k = 0; k <= n; ++k) {
+            value += row[k] * g.polynomial.c[k];
+            radius += std::abs(row[k]) * (g.radius[k] + rounding * std::abs(g.polynomial.c[k]));
+        }
+        out.b[i] = value;
+        out.r[i] = radius * (1.0 + 2.0 * rounding) + kUnderflow;
+    }
+    return out;
+}
+
+void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right) {
+    split_at(whole, 0.5, left, right);
+}
+
+void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right) {
+    const int n = whole.degree;
+    left.degree = right.degree = n;
+    if (n < 0) {
+        return;
+    }
+    const bool half = tau == 0.5;
+    const double keep = 1.0 - tau;
+    // The triangle of de Casteljau row by row: the left piece takes each row's first entry,
+    // the right piece each row's last (in reverse order). Magnitudes follow the values so that
+    // the rounding of every entry can be bounded by γ·(the same scheme on |b|).
+    std::array<double, kMaxDegree + 1> v, m, r, left_m, right_m;
+    for (int i = 0; i <= n; ++i) {
+        v[i] = whole.b[i];
+        m[i] = std::abs(whole.b[i]);
+        r[i] = whole.r[i];
+    }
+    left.b[0] = v[0];
+    left.r[0] = r[0];
+    left_m[0] = m[0];
+    right.b[n] = v[n];
+    right.r[n] = r[n];
+    right_m[n] = m[n];
+    for (int level = 1; level <= n; ++level) {
+        for (int i = 0; i <= n - level; ++i) {
+            if (half) {
+                v[i] = 0.5 * (v[i] + v[i + 1]);
+                m[i] = 0.5 * (m[i] + m[i + 1]);
+                r[i] = 0.5 * (r[i] + r[i + 1]);
+            } else {
+                v[i] = keep * v[i] + tau * v[i + 1];
+                m[i] = keep * m[i] + tau * m[i + 1];
+                r[i] = keep * r[i] + tau * r[i + 1];
+            }
+        }
+        left.b[level] = v[0];
+        left.r[level] = r[0];
+        left_m[level] = m[0];
+        right.b[n - level] = v[n - level];
+        right.r[n - level] = r[n - level];
+        right_m[n - level] = m[n - level];
+    }
+    // Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is
+    // exact) and three otherwise (the weight 1 − τ, the products, the sum); the magnitudes and
+    // radii, all positive, are rounded as often.
+    const double rounding = gamma(half ? n + 1 : 3 * n + 3);
+    const double widen = 1.0 + 2.0 * rounding;
+    for (int i = 0; i <= n; ++i) {
+        left.r[i] = (left.r[i] + rounding * left_m[i]) * widen + kUnderflow;
+        right.r[i] = (right.r[i] + rounding * right_m[i]) * widen + kUnderflow;
+    }
+}
+
+BallValue evaluate(const BernsteinBall& g, double sigma) {
+    BallValue out;
+    const int n = g.degree;
+    if (n < 0) {
+        return out;
+    }
+    const double keep = 1.0 - sigma;
+    std::array<double, kMaxDegree + 1> v, m, r;
+    for (int i = 0; i <= n; ++i) {
+        v[i] = g.b[i];
+        m[i] = std::abs(g.b[i]);
+        r[i] = g.r[i];
+    }
+    for (int level = 1; level <= n; ++level) {
+        for (int i = 0; i <= n - level; ++i) {
+            v[i] = keep * v[i] + sigma * v[i + 1];
+            m[i] = keep * m[i] + sigma * m[i + 1];
+            r[i] = keep * r[i] + sigma * r[i + 1];
+        }
+    }
+    const double rounding = gamma(3 * n + 3);
+    out.value = v[0];
+    out.radius = (r[0] + rounding * m[0]) * (1.0 + 2.0 * rounding) + kUnderflow;
+    if (!std::isfinite(out.value) || !std::isfinite(out.radius)) {
+        out.radius = INFINITY;
+    }
+    return out;
+}
+
+ValueSlope estimate(const BernsteinBall& g, double sigma) {
+    const int n = g.degree;
+    ValueSlope out;
+    if (n <= 0) {
+        out.value = n == 0 ? g.b[0] : 0.0;
+        return out;
+    }
+    const auto& c = binomials().c;
+    // Σ b_i C(n, i) σ^i (1 − σ)^(n − i) by Horner in q = σ/(1 − σ) (or its reciprocal past the
+    // middle, so that q ≤ 1), and the derivative n·Σ (b_{i+1} − b_i) C(n − 1, i) σ^i (1 − σ)^…
+    // the same way.
+    const bool low = sigma <= 0.5;
+    const double q = low ? sigma / (1.0 - sigma) : (1.0 - sigma) / sigma;
+    const double base = low ? 1.0 - sigma : sigma;
+    double value = 0.0, slope = 0.0;
+    for (int step = 0; step <= n; ++step) {
+        const int i = low ? n - step : step;
+        value = value * q + g.b[i] * c[n][i];
+    }
+    for (int step = 0; step < n; ++step) {
+        const int i = low ? n - 1 - step : step;
+        slope = slope * q + (g.b[i + 1] - g.b[i]) * c[n - 1][i];
+    }
+    double power = 1.0;  // base^(n − 1)
+    for (int k = 1; k < n; ++k) {
+        power *= base;
+    }
+    out.value = value * power * base;
+    out.slope = n * slope * power;
+    return out;
+}
+
+}  // namespace locus::render

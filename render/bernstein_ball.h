@@ -1,0 +1,62 @@
+// A polynomial on [0, 1] in the Bernstein basis, known up to a radius per coefficient: the
+// exact coefficient i lies in [b[i] − r[i], b[i] + r[i]]. This is the object the certified root
+// finder (render/certified_isolation.h) decides on, so every operation here keeps the radii
+// rigorous: each computed coefficient's rounding is bounded by γ_k·Σ|terms| (Higham, "Accuracy
+// and Stability of Numerical Algorithms", 2nd ed., §3.1: γ_k = k·u/(1 − k·u), u = 2^-53) and
+// added to the radius, which is itself rounded up. The operations have positive weights (the
+// conversion from powers on [0, 1], de Casteljau), so radii only ever add.
+//
+// Why Bernstein: the coefficients' signs bound the number of roots on the interval (Descartes'
+// rule in the Bernstein basis, Lane & Riesenfeld, BIT 21 (1981)), the end coefficients are the
+// values at the ends, and subdivision converges to the values — all three survive uncertainty
+// in every coefficient, which is what a decision under rounding needs.
+#pragma once
+
+#include <array>
+
+#include "render/ray_restriction.h"
+#include "render/root_finder.h"
+
+namespace locus::render {
+
+// Coefficients past `degree` are never read, and are left uninitialised: balls live in
+// per-ray stacks of up to 53 of them.
+struct BernsteinBall {
+    int degree = -1;
+    std::array<double, kMaxDegree + 1> b;
+    std::array<double, kMaxDegree + 1> r;
+
+    // +1 or −1 when coefficient i is certainly of that sign, 0 when it may be zero.
+    int sign(int i) const { return b[i] - r[i] > 0.0 ? 1 : (b[i] + r[i] < 0.0 ? -1 : 0); }
+};
+
+// The power-basis ball G(x) = Σ g_k x^k (with radii) on x ∈ [−1, 1], in the Bernstein basis
+// of its degree on that interval, mapped to σ = (1 + x)/2 ∈ [0, 1]. Restrictions are expanded
+// about the middle of their segment: the terms there are as small as the segment allows
+// ((|p| + |d|)^k rather than (|p| + 2|d|)^k about an end: 130 times smaller at degree 12 for a
+// chord through the middle of a clip sphere), and so are the roundings.
+BernsteinBall to_bernstein(const RestrictionBall& g);
+
+// De Casteljau at σ = 1/2: the halves [0, 1/2] and [1/2, 1], each mapped to [0, 1].
+void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right);
+
+// De Casteljau at the double τ ∈ (0, 1): the pieces [0, τ] and [τ, 1], each mapped to [0, 1].
+void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right);
+
+// The value at the double σ ∈ [0, 1] (de Casteljau, O(n²)) with a rigorous radius.
+struct BallValue {
+    double value = 0.0;
+    double radius = 0.0;
+    int sign() const { return value - radius > 0.0 ? 1 : (value + radius < 0.0 ? -1 : 0); }
+};
+BallValue evaluate(const BernsteinBall& g, double sigma);
+
+// The value and derivative of the midpoint polynomial (radii ignored) at σ, in O(n): for the
+// Newton steps that only propose points, which evaluate() then certifies.
+struct ValueSlope {
+    double value = 0.0;
+    double slope = 0.0;
+};
+ValueSlope estimate(const BernsteinBall& g, double sigma);
+
+}  // namespace locus::render

@@ -1,0 +1,209 @@
+#include "render/certified_isolation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace locus::render {
+
+int most_sign_changes(const BernsteinBall& g) {
+    // The most changes of a choice of signs for coefficients 0..i that ends negative (or
+    // positive); −1 when coefficient i cannot have that sign.
+    int negative = -1, positive = -1;
+    for (int i = 0; i <= g.degree; ++i) {
+        const int s = g.sign(i);
+        const int from_negative = negative, from_positive = positive;
+        if (i == 0) {
+            negative = s <= 0 ? 0 : -1;
+            positive = s >= 0 ? 0 : -1;
+            continue;
+        }
+        negative =
+            s <= 0 ? std::max(from_negative, from_positive >= 0 ? from_positive + 1 : -1) : -1;
+        positive =
+            s >= 0 ? std::max(from_positive, from_negative >= 0 ? from_negative + 1 : -1) : -1;
+    }
+    return std::max(negative, positive);
+}
+
+Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) {
+    Isolation out;
+    max_depth = std::clamp(max_depth, 0, 52);
+    if (g.degree < 0) {
+        out.kind = Isolation::Kind::undecided;  // the zero polynomial: every point is a root
+        out.piece = g;
+        return out;
+    }
+    // Pending right halves, innermost last; the piece being examined is [a, a + 2^-depth].
+    std::array<BernsteinBall, 53> stack;
+    std::array<double, 53> stack_a;
+    std::array<int, 53> stack_depth;
+    int top = 0;
+    BernsteinBall piece = g;
+    double a = 0.0;
+    int depth = 0;
+    for (;;) {
+        ++out.work;
+        // A piece past the end of the search, and every piece after it, is not looked at.
+        const int changes = a > end ? 0 : most_sign_changes(piece);
+        if (a > end) {
+            top = 0;
+        }
+        const double width = std::ldexp(1.0, -depth);
+        const int first = piece.sign(0);
+        const int last = piece.sign(piece.degree);
+        if (changes == 1 && first != 0 && last != 0 && first != last) {
+            out.kind = Isolation::Kind::one_root;
+            out.lo = a;
+            out.hi = a + width;
+            out.sign_at_lo = first;
+            out.piece = piece;
+            return out;
+        }
+        if (changes != 0) {
+            if (depth >= max_depth) {
+                out.kind = Isolation::Kind::undecided;
+                out.lo = a;
+                out.hi = a + width;
+                out.piece = piece;
+                return out;
+            }
+            ++depth;
+            stack_a[top] = a + std::ldexp(1.0, -depth);
+            stack_depth[top] = depth;
+            BernsteinBall left;
+            split_half(piece, left, stack[top]);
+            piece = left;
+            ++top;
+            continue;
+        }
+        if (top == 0) {
+            out.kind = Isolation::Kind::no_root;
+            return out;
+        }
+        --top;
+        piece = stack[top];
+        a = stack_a[top];
+        depth = stack_depth[top];
+    }
+}
+
+Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) {
+    Bracket out;
+    double a = 0.0, b = 1.0;  // G(a) has sign_at_zero, G(b) the opposite, both certified
+    const auto sign_at = [&](double p) {
+        ++out.work;
+        return evaluate(piece, p).sign();
+    };
+    // The root of the midpoint polynomial by safeguarded Newton (a Newton step that leaves the
+    // bracket of the midpoint polynomial's own signs, or does not halve it, is replaced by
+    // bisection): the estimate, and whether the radii leave any hope of placing the root to
+    // `width`.
+    {
+        double lo = 0.0, hi = 1.0, x = 0.5;
+        const ValueSlope at_lo = estimate(piece, 0.0), at_hi = estimate(piece, 1.0);
+        if (at_lo.value != at_hi.value && std::isfinite(at_lo.value - at_hi.value)) {
+            x = std::clamp(-at_lo.value / (at_hi.value - at_lo.value), 0.0, 1.0);
+        }
+        double slope = 0.0, previous_step = 1.0;
+        for (int step = 0; step < 100 && hi - lo > 1e-3 * width && previous_step > 1e-3 * width;
+             ++step) {
+            const ValueSlope e = estimate(piece, x);
+            slope = e.slope;
+            if (e.value == 0.0) {
+                break;
+            }
+            if ((e.value > 0.0) == (sign_at_zero > 0)) {
+                lo = x;
+            } else {
+                hi = x;
+            }
+            double next = x - e.value / e.slope;
+            if (!(next > lo && next < hi) || std::abs(next - x) > 0.5 * previous_step) {
+                next = 0.5 * (lo + hi);
+            }
+            previous_step = std::abs(next - x);
+            x = next;
+        }
+        out.estimate = x;
+        double noise = 0.0;
+        for (int i = 0; i <= piece.degree; ++i) {
+            noise = std::max(noise, piece.r[i]);
+        }
+        if (!(noise < 0.25 * width * std::abs(slope))) {
+            return out;
+        }
+    }
+    bool bisect = false;
+    for (int iteration = 0; iteration < 200 && b - a > width; ++iteration) {
+        // A proposal from the midpoint polynomial: regula falsi between a and b, then Newton;
+        // the midpoint of [a, b] after a proposal that did not halve the bracket.
+        double x = 0.5 * (a + b);
+        if (!bisect) {
+            const ValueSlope at_a = estimate(piece, a), at_b = estimate(piece, b);
+            if (at_a.value != at_b.value && std::isfinite(at_a.value) &&
+                std::isfinite(at_b.value)) {
+                const double secant = a - at_a.value * (b - a) / (at_b.value - at_a.value);
+                if (secant > a && secant < b) {
+                    x = secant;
+                }
+            }
+            for (int step = 0; step < 8; ++step) {
+                const ValueSlope e = estimate(piece, x);
+                const double next = x - e.value / e.slope;
+                if (!(next > a && next < b)) {
+                    break;
+                }
+                const bool converged = std::abs(next - x) <= 0.0625 * width;
+                x = next;
+                if (converged) {
+                    break;
+                }
+            }
+        }
+        // Certified signs either side of x, a quarter width away, and 8, 64, … times farther
+        // while the radii hide the sign: each certain sign moves an end of the bracket.
+        const double before = b - a;
+        bool hidden_left = false, hidden_right = false;
+        for (double h = 0.25 * width;; h *= 8.0) {
+            const double p = x - h;
+            if (!(p > a)) {
+                break;
+            }
+            const int s = sign_at(p);
+            if (s != 0) {
+                (s == sign_at_zero ? a : b) = p;
+                break;
+            }
+            hidden_left = hidden_left || h == 0.25 * width;
+        }
+        for (double h = 0.25 * width;; h *= 8.0) {
+            const double p = x + h;
+            if (!(p < b) || !(p > a)) {
+                break;
+            }
+            const int s = sign_at(p);
+            if (s != 0) {
+                (s == sign_at_zero ? a : b) = p;
+                break;
+            }
+            hidden_right = hidden_right || h == 0.25 * width;
+        }
+        if (b - a > 0.5 * before) {
+            // Both signs next to x hidden by the radii: the root's position is not resolved at
+            // this width. Otherwise the proposal was poor: bisect next.
+            if (hidden_left && hidden_right) {
+                break;
+            }
+            bisect = true;
+        } else {
+            bisect = false;
+        }
+    }
+    out.lo = a;
+    out.hi = b;
+    out.certified = b - a <= width;
+    out.estimate = std::clamp(out.estimate, a, b);
+    return out;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,54 @@
+// Certified isolation of the first root of a polynomial known up to its Bernstein coefficients'
+// radii (render/bernstein_ball.h), and certified narrowing of an isolated root. Every decision
+// holds for every polynomial inside the ball — so for the exact restriction of the exact
+// surface, whenever the ball's radii are rigorous — or is not taken: the answer is then
+// "undecided" and the caller escalates (a tighter expansion, double-double, exact arithmetic).
+//
+// The rule: on a piece, let V be the number of sign changes of the exact Bernstein
+// coefficients. The number of roots in the piece is at most V and has its parity (Lane &
+// Riesenfeld 1981). With uncertain signs V is not known, but V_max — the most sign changes any
+// choice of the uncertain signs gives — bounds it. V_max = 0: no root (every coefficient
+// certainly of one sign). V_max = 1 with end coefficients (the values at the ends) certainly of
+// opposite signs: V = 1, exactly one root, simple. Otherwise split at the middle, left first.
+#pragma once
+
+#include "render/bernstein_ball.h"
+
+namespace locus::render {
+
+struct Isolation {
+    enum class Kind {
+        no_root,    // no root in [0, 1]
+        one_root,   // exactly one root in [lo, hi], none in [0, lo); G(lo) has sign `sign_at_lo`
+        undecided,  // no root in [0, lo); [lo, hi] could not be decided at the depth limit
+    };
+    Kind kind = Kind::no_root;
+    double lo = 0.0, hi = 1.0;  // dyadic, exact
+    int sign_at_lo = 0;
+    BernsteinBall piece;  // the ball on [lo, hi], mapped to [0, 1]
+    int work = 0;         // pieces examined
+};
+
+// Pieces narrower than 2^-max_depth are not split (max_depth ≤ 52). Pieces that start after
+// `end` are not looked at (a search that ends there): `no_root` then means none in [0, end],
+// and a `one_root` piece may reach past `end`, with its root on either side.
+Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end = 1.0);
+
+// The most sign changes of any choice of signs for the coefficients the ball leaves uncertain.
+int most_sign_changes(const BernsteinBall& g);
+
+// Narrows the one root of `piece` (G(0) of sign `sign_at_zero`, G(1) of the opposite sign) to a
+// certified bracket [lo, hi] ⊆ [0, 1] of width ≤ `width`. `certified` is false when the ball's
+// radii hide the root's position at that width (the caller needs more precision); lo and hi
+// are then still a certified bracket, only wider. When the radii are plainly too wide for the
+// width (largest radius over the slope at the estimate above a quarter of it), no probe is
+// spent: the bracket is [0, 1] with the estimate.
+struct Bracket {
+    double lo = 0.0, hi = 1.0;
+    bool certified = false;
+    int work = 0;
+    double estimate = 0.5;  // the root as the midpoint polynomial places it, in [lo, hi]
+};
+Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width);
+
+}  // namespace locus::render

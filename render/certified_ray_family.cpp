@@ -1,0 +1,204 @@
+#include "render/certified_ray_family.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/detail/chebyshev_interpolation.h"
+#include "render/ray_restriction.h"
+
+namespace locus::render {
+
+namespace {
+
+constexpr double kUnit = 0x1.0p-53;
+
+double gamma(int k) {
+    return k * kUnit / (1.0 - k * kUnit);
+}
+
+// |computed − exact| for Camera::direction(x, y) = (base + x·U) + y·V in doubles, four
+// roundings: at most 3u·(|base| + |x||U| + |y||V|) componentwise (3.1u with room).
+Vec3 direction_rounding(const Camera& camera, double x, double y) {
+    return 3.1 * kUnit *
+           (glm::abs(camera.base()) + std::abs(x) * glm::abs(camera.per_column()) +
+            std::abs(y) * glm::abs(camera.per_row()));
+}
+
+}  // namespace
+
+CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
+                                       const Vec3& center, double radius, int width, int height)
+    : degree_(f.degree()),
+      center_x_(0.5 * width),
+      half_width_(0.5 * width),
+      center_y_(0.5 * height),
+      half_height_(0.5 * height) {
+    const int n = degree_;
+    if (n < 0 || n > kMaxDegree || !(radius > 0.0)) {
+        return;
+    }
+    const auto nodes = static_cast<std::size_t>(n + 1);
+    const LineRestrictor restrictor(f.terms());
+    const detail::ChebyshevInterpolation chebyshev(n);
+    const Vec3& eye = camera.eye();
+    const double plane_t = glm::dot(center - eye, camera.forward());
+    t_start_ = plane_t - radius;
+    t_width_ = 2.0 * radius;
+    // The reference ray of image point (cx + hw·u, cy + hh·v) is e + (D + x·R)·d(u, v) with the
+    // exact d = base + (cx + hw·u)·U + (cy + hh·v)·V; as a line in x ∈ [−1, 1] its origin is
+    // e + D·d and its direction R·d.
+    auto line_ball = [&](double image_x, double image_y, const Vec3& node_error) {
+        const Vec3 d = camera.direction(image_x, image_y);
+        const Vec3 d_error = direction_rounding(camera, image_x, image_y) + node_error;
+        Vec3 origin, direction;
+        LineError error;
+        for (int i = 0; i < 3; ++i) {
+            origin[i] = std::fma(plane_t, d[i], eye[i]);
+            direction[i] = radius * d[i];
+            error.origin[i] = 1.01 * kUnit * std::abs(origin[i]) + std::abs(plane_t) * d_error[i];
+            error.direction[i] = 1.01 * kUnit * std::abs(direction[i]) + radius * d_error[i];
+        }
+        return to_bernstein(
+            restrictor.restrict_with_bounds(origin, direction, error, f.coefficient_error()));
+    };
+
+    // The nodes' balls: node (j, k) at u_j, v_k, whose image coordinates are themselves
+    // rounded (cx + hw·u_j: within 2.1u·(|cx| + hw)).
+    const Vec3 node_error = 2.1 * kUnit *
+                            ((center_x_ + half_width_) * glm::abs(camera.per_column()) +
+                             (center_y_ + half_height_) * glm::abs(camera.per_row()));
+    std::vector<BernsteinBall> balls(nodes * nodes);
+    for (std::size_t j = 0; j < nodes; ++j) {
+        for (std::size_t k = 0; k < nodes; ++k) {
+            BernsteinBall& ball = balls[j * nodes + k];
+            ball = line_ball(center_x_ + chebyshev.node(static_cast<int>(j)) * half_width_,
+                             center_y_ + chebyshev.node(static_cast<int>(k)) * half_height_,
+                             node_error);
+            for (int i = 0; i <= n; ++i) {
+                if (!std::isfinite(ball.b[i]) || !std::isfinite(ball.r[i])) {
+                    return;
+                }
+            }
+        }
+    }
+
+    // Interpolation: in u for every node row v_k, then each coefficient in v.
+    by_uv_.assign(nodes * nodes * nodes, 0.0);
+    std::vector<double> in_u(nodes * nodes);  // [k·(n + 1) + a] for the current i
+    for (int i = 0; i <= n; ++i) {
+        for (std::size_t k = 0; k < nodes; ++k) {
+            chebyshev.interpolate(
+                [&](int j) { return balls[static_cast<std::size_t>(j) * nodes + k].b[i]; },
+                in_u.data() + k * nodes);
+        }
+        for (std::size_t a = 0; a < nodes; ++a) {
+            chebyshev.interpolate(
+                [&](int k) { return in_u[static_cast<std::size_t>(k) * nodes + a]; },
+                by_uv_.data() + (static_cast<std::size_t>(i) * nodes + a) * nodes);
+        }
+    }
+
+    // The frame's magnitudes of the reference lines' origins and directions (both affine in
+    // u and v: at most the centre's magnitude plus the two slopes'), and how far a pixel's
+    // computed ray may be from its reference: the direction's rounding, and the rounding of
+    // u = (x − cx)/hw and v (within 4.1u·(|x| + cx) of the pixel, times |U|).
+    const Vec3 d_center = camera.direction(center_x_, center_y_);
+    const Vec3 slope_u = half_width_ * glm::abs(camera.per_column());
+    const Vec3 slope_v = half_height_ * glm::abs(camera.per_row());
+    const Vec3 largest_origin =
+        (glm::abs(eye + plane_t * d_center) + std::abs(plane_t) * (slope_u + slope_v)) *
+            (1.0 + 1e-12) +
+        4.0 * kUnit * (glm::abs(eye) + std::abs(plane_t) * glm::abs(d_center));
+    const Vec3 largest_direction =
+        radius * (glm::abs(d_center) + slope_u + slope_v) * (1.0 + 1e-12);
+    const Vec3 pixel_error = direction_rounding(camera, 2.0 * center_x_, 2.0 * center_y_) +
+                             4.1 * kUnit *
+                                 (4.0 * center_x_ * glm::abs(camera.per_column()) +
+                                  4.0 * center_y_ * glm::abs(camera.per_row())) +
+                             direction_rounding(camera, center_x_, center_y_);
+    LineError pixel_line;
+    pixel_line.origin = std::abs(plane_t) * pixel_error;
+    pixel_line.direction = radius * pixel_error;
+    RestrictionBall growth;
+    growth.polynomial.degree = n;
+    growth.radius = restrictor.growth_bound(largest_origin, largest_direction, pixel_line);
+    const BernsteinBall pixel_growth = to_bernstein(growth);
+
+    // The radius of every coefficient, for every pixel.
+    const double lebesgue = chebyshev.lebesgue_bound();
+    std::vector<double> node_values(nodes * nodes);
+    for (int i = 0; i <= n; ++i) {
+        const double* p = by_uv_.data() + static_cast<std::size_t>(i) * nodes * nodes;
+        double total = 0.0;  // Σ|p_ab|, which bounds |B_i| on [−1, 1]²
+        for (std::size_t ab = 0; ab < nodes * nodes; ++ab) {
+            total += std::abs(p[ab]);
+        }
+        // Evaluating the interpolant in doubles (by v, then by u) errs by at most
+        // γ_{2n+4}·Σ|p_ab| on [−1, 1]²: at the nodes here, and at every row and pixel.
+        const double evaluation = gamma(2 * n + 4) * total * 1.01;
+        double at_nodes = 0.0;
+        for (std::size_t j = 0; j < nodes; ++j) {
+            const double u = chebyshev.node(static_cast<int>(j));
+            for (std::size_t k = 0; k < nodes; ++k) {
+                const double v = chebyshev.node(static_cast<int>(k));
+                double value = 0.0;
+                for (int a = n; a >= 0; --a) {
+                    const double* in_v = p + static_cast<std::size_t>(a) * nodes;
+                    double coefficient = in_v[n];
+                    for (int b = n - 1; b >= 0; --b) {
+                        coefficient = coefficient * v + in_v[b];
+                    }
+                    value = value * u + coefficient;
+                }
+                const BernsteinBall& ball = balls[j * nodes + k];
+                at_nodes = std::max(at_nodes, std::abs(ball.b[i] - value) + ball.r[i]);
+            }
+        }
+        // sup |B_i − interpolant| ≤ Λ²·max at the nodes (both of degree ≤ n in u and in v),
+        // plus the evaluations' rounding and the pixel rays' distance from their references.
+        radius_[i] = ((at_nodes * (1.0 + 4.0 * kUnit) + evaluation) * lebesgue * lebesgue +
+                      evaluation + pixel_growth.r[i]) *
+                     (1.0 + 1e-12);
+    }
+    certified_ = true;
+    for (int i = 0; i <= n; ++i) {
+        certified_ = certified_ && std::isfinite(radius_[i]);
+    }
+}
+
+void CertifiedRayFamily::expand_row(double y, Row& out) const {
+    const int n = degree_;
+    out.degree = n;
+    if (!certified_) {
+        return;
+    }
+    const auto nodes = static_cast<std::size_t>(n + 1);
+    const double v = std::clamp((y - center_y_) / half_height_, -1.0, 1.0);
+    for (int i = 0; i <= n; ++i) {
+        for (int a = 0; a <= n; ++a) {
+            const double* in_v = by_uv_.data() + (static_cast<std::size_t>(i) * nodes + a) * nodes;
+            double value = in_v[n];
+            for (int b = n - 1; b >= 0; --b) {
+                value = value * v + in_v[b];
+            }
+            out.by_u[i][a] = value;
+        }
+    }
+}
+
+void CertifiedRayFamily::ball_at(const Row& row, double x, BernsteinBall& out) const {
+    const int n = row.degree;
+    out.degree = n;
+    const double u = std::clamp((x - center_x_) / half_width_, -1.0, 1.0);
+    for (int i = 0; i <= n; ++i) {
+        const auto& in_u = row.by_u[i];
+        double value = in_u[n];
+        for (int a = n - 1; a >= 0; --a) {
+            value = value * u + in_u[a];
+        }
+        out.b[i] = value;
+        out.r[i] = radius_[i];
+    }
+}
+
+}  // namespace locus::render

@@ -1,0 +1,64 @@
+// The primary rays of one frame restricted to a surface all at once, with rigorous bounds: the
+// certified counterpart of render/ray_family.h, which the `certified` method uses.
+//
+// Every primary ray meets the plane through the clip sphere's centre c perpendicular to the
+// viewing direction w at the same parameter D = (c − e)·w (render/ray_family.h), and stays in
+// the clip sphere only for t ∈ [D − R, D + R]. On that range each ray's restriction, as a
+// polynomial in x = (t − D)/R ∈ [−1, 1], has Bernstein coefficients B_i(u, v) that are
+// polynomials of degree ≤ n in each of the image coordinates u, v ∈ [−1, 1] (the ray's direction
+// is affine in them). The frame restricts f along the (n + 1)² rays at the Chebyshev nodes with
+// rigorous radii (LineRestrictor::restrict_with_bounds), interpolates each B_i in u and v, and
+// bounds, once for the whole frame, how far the interpolant can be from the exact B_i anywhere:
+//   * at the nodes, the interpolant's value against the node's ball;
+//   * everywhere, that difference (a polynomial of degree ≤ n in u and in v) times the tensor
+//     Lebesgue constant of the nodes (ChebyshevInterpolation::lebesgue_bound squared);
+//   * the roundings of evaluating the interpolant for a row and a pixel;
+//   * the difference between the exact affine ray of a pixel's coordinates and the ray the
+//     camera computes in doubles (LineRestrictor::growth_bound over the frame's magnitudes).
+// So the ball of every pixel's ray holds the exact restriction of the exact surface along the
+// camera's ray, and a pixel costs (n + 1)² multiply-adds to get it.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "algebra/compiled.h"
+#include "render/bernstein_ball.h"
+#include "render/camera.h"
+
+namespace locus::render {
+
+class CertifiedRayFamily {
+  public:
+    // `center`, `radius`: a sphere holding every clip interval of the frame.
+    CertifiedRayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
+                       const Vec3& center, double radius, int width, int height);
+
+    // False when no finite bound could be had (overflow; a coefficient of f outside the normal
+    // doubles): every ray is then traced alone.
+    bool certified() const { return certified_; }
+    // The balls are restrictions to t ∈ [t_start, t_start + t_width].
+    double t_start() const { return t_start_; }
+    double t_width() const { return t_width_; }
+
+    // The Bernstein coefficients along one image row, as polynomials in u: by_u[i][a] is the
+    // coefficient of u^a in B_i.
+    struct Row {
+        int degree = -1;
+        std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> by_u;
+    };
+    void expand_row(double y, Row& out) const;
+    // The ball of the primary ray through (x, y) on the row expanded at y.
+    void ball_at(const Row& row, double x, BernsteinBall& out) const;
+
+  private:
+    int degree_ = -1;
+    double center_x_, half_width_, center_y_, half_height_;
+    double t_start_ = 0.0, t_width_ = 1.0;
+    bool certified_ = false;
+    // by_uv_[(i·(n + 1) + a)·(n + 1) + b]: the coefficient of u^a·v^b in B_i.
+    std::vector<double> by_uv_;
+    std::array<double, kMaxDegree + 1> radius_{};  // for every pixel of the frame
+};
+
+}  // namespace locus::render

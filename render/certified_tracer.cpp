@@ -1,0 +1,314 @@
+#include "render/certified_tracer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "render/certified_isolation.h"
+
+namespace locus::render {
+
+namespace {
+
+constexpr double kUnit = 0x1.0p-53;
+// What a subnormal result may lose, added to bounds that are otherwise relative.
+constexpr double kTiny = 0x1.0p-1070;
+
+// Subdivision depth of one segment's ball before its undecided piece is expanded afresh (the
+// piece is then 64 times narrower than the segment, and its terms no larger than its own).
+constexpr int kSegmentDepth = 6;
+// Depth for a ray family's ball, which cannot be expanded again without tracing the ray alone.
+constexpr int kFamilyDepth = 10;
+// Segments a ray may expand before the exact method decides.
+constexpr int kMaxSegments = 16;
+
+RootResult miss(int work) {
+    RootResult r;
+    r.status = RootStatus::miss;
+    r.work = work;
+    return r;
+}
+
+RootResult hit(double t, int work, Decision decided_by) {
+    RootResult r;
+    r.status = RootStatus::hit;
+    r.t = t;
+    r.work = work;
+    r.decided_by = decided_by;
+    return r;
+}
+
+// max(1, |t|) over [lo, hi]'s smallest magnitude: the scale of the tolerance there.
+double tolerance_scale(double lo, double hi) {
+    if (lo <= 0.0 && hi >= 0.0) {
+        return 1.0;
+    }
+    return std::max(1.0, std::min(std::abs(lo), std::abs(hi)));
+}
+
+}  // namespace
+
+// An isolated root: exactly one root of F in the exact t-range whose computed ends are t_lo and
+// t_hi (each within `margin` of exact), none before it in the interval searched, and F(t_lo) of
+// sign `sign_at_lo`. `ball` is the restriction on that range, mapped to [0, 1].
+struct CertifiedTracer::Piece {
+    BernsteinBall ball;
+    int sign_at_lo = 0;
+    double t_lo = 0.0, t_hi = 0.0;
+    double margin = 0.0;
+};
+
+CertifiedTracer::CertifiedTracer(const algebra::CompiledPolynomial& f)
+    : f_(&f), restrictor_(f.terms()), coefficient_error_(f.coefficient_error()) {}
+
+RestrictionBall CertifiedTracer::segment_ball(const Ray& ray, double a, double b) const {
+    // The segment [a, b] about its middle, x ∈ [−1, 1]: the exact line is
+    // m + x·h with m = o + a·d + h and h = (b − a)·d/2. o + a·d is rounded once (an FMA:
+    // within u of exact, relative), h twice (b − a, then the product; halving is exact), and
+    // m once more, with an error of its own that the restriction's balls carry.
+    const double half_width = 0.5 * (b - a);
+    Vec3 middle, half;
+    LineError error;
+    for (int i = 0; i < 3; ++i) {
+        const double start = std::fma(a, ray.direction[i], ray.origin[i]);
+        half[i] = half_width * ray.direction[i];
+        middle[i] = start + half[i];
+        error.direction[i] = std::abs(half[i]) * (2.03 * kUnit) + kTiny;
+        error.origin[i] = std::abs(start) * (1.01 * kUnit) + error.direction[i] +
+                          std::abs(middle[i]) * (1.01 * kUnit) + kTiny;
+    }
+    return restrictor_.restrict_with_bounds(middle, half, error, coefficient_error_);
+}
+
+RootResult CertifiedTracer::exact(const Ray& ray, Interval interval, int work) const {
+    const algebra::ExactRoot root = algebra::exact_first_root(
+        *f_, to_point(ray.origin), to_point(ray.direction), interval.lo, interval.hi, true);
+    // A ray lying in the surface meets it everywhere: the start of the interval is reported.
+    return root.status == algebra::ExactRoot::Status::miss
+               ? [&] {
+                     RootResult r = miss(work + 1);
+                     r.decided_by = Decision::exact;
+                     return r;
+                 }()
+               : hit(root.t, work + 1, Decision::exact);
+}
+
+RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double tolerance,
+                                   int work) const {
+    // Tier 1: the ball itself. A bracket of σ-width w maps to t-width w·(t_hi − t_lo), within
+    // m of exact at either end (the two ends' margins, and the rounding of the map).
+    const double span = piece.t_hi - piece.t_lo;
+    const double m = 2.0 * piece.margin +
+                     4.0 * kUnit * std::max(std::abs(piece.t_lo), std::abs(piece.t_hi)) + kTiny;
+    const double allowed = tolerance * tolerance_scale(piece.t_lo, piece.t_hi);
+    const auto at = [&](double sigma) { return piece.t_lo + sigma * span; };
+    const Bracket bracket = narrow_root(piece.ball, piece.sign_at_lo, 0.5 * allowed / span);
+    work += bracket.work;
+    const double lower = at(bracket.lo) - m, upper = at(bracket.hi) + m;
+    if (bracket.certified || upper - lower <= allowed) {
+        return hit(0.5 * (at(bracket.lo) + at(bracket.hi)), work, Decision::floating);
+    }
+    // Tier 2: signs of F at points of the ray, evaluated from f at the point with a running
+    // error bound in doubles — the error of the point's own terms, far below the ball's where
+    // the ball covers a long segment or a whole frame — and then in double-double. The root is
+    // the only one in the exact range [lower, upper]; a point left of it has sign_at_lo, right
+    // of it the other. `left`/`right` are the tightest ends known so far; a point whose sign
+    // the arithmetic cannot tell leaves them as they are.
+    double left = lower, right = upper;
+    double probe_lo = at(bracket.lo) + m, probe_hi = at(bracket.hi) - m;
+    using Precision = algebra::CompiledPolynomial::Precision;
+    for (const Precision precision : {Precision::double_precision, Precision::double_double}) {
+        // Evaluates at p; a certain sign moves an end of the bracket.
+        const auto probe = [&](double p) {
+            ++work;
+            const algebra::ValueEnclosure e =
+                f_->enclose_on_line(to_point(ray.origin), to_point(ray.direction), p, precision);
+            if (p >= probe_lo && p <= probe_hi) {
+                if (e.sign() == piece.sign_at_lo) {
+                    left = probe_lo = p;
+                } else if (e.sign() == -piece.sign_at_lo) {
+                    right = probe_hi = p;
+                }
+            }
+            return e.value + e.value_low;
+        };
+        const auto done = [&] { return right - left <= tolerance * tolerance_scale(left, right); };
+        // Newton steps on the point values from the ball's estimate, with the ball's slope
+        // (proposals only), then certified signs a quarter tolerance either side, and
+        // farther out while the arithmetic cannot tell.
+        double x = std::clamp(at(bracket.estimate), probe_lo, probe_hi);
+        const double h = 0.25 * tolerance * std::max(1.0, std::abs(x));
+        const double slope = estimate(piece.ball, bracket.estimate).slope / span;
+        for (int step = 0; step < 6 && !done(); ++step) {
+            const double value = probe(x);
+            const double next = std::clamp(x - value / slope, probe_lo, probe_hi);
+            if (!std::isfinite(next)) {
+                break;
+            }
+            const bool converged = std::abs(next - x) <= h;
+            x = next;
+            if (converged) {
+                break;
+            }
+        }
+        for (int side : {-1, 1}) {
+            for (double step = h; !done(); step *= 8.0) {
+                const double p = x + side * step;
+                if (!(p > probe_lo && p < probe_hi)) {
+                    break;
+                }
+                const double before = right - left;
+                probe(p);
+                if (right - left < before) {
+                    break;
+                }
+            }
+        }
+        // What is left: bisection on certain signs, while they stay certain.
+        for (int iteration = 0; iteration < 80 && !done(); ++iteration) {
+            const double before = right - left;
+            probe(0.5 * (probe_lo + probe_hi));
+            if (!(right - left < before)) {
+                break;
+            }
+        }
+        if (done()) {
+            return hit(0.5 * (left + right), work,
+                       precision == Precision::double_double ? Decision::double_double
+                                                             : Decision::floating);
+        }
+    }
+    // Tier 3: exact arithmetic on the range that holds the root (and nothing before it).
+    return exact(ray, {std::nextafter(lower, -INFINITY), std::nextafter(upper, INFINITY)}, work);
+}
+
+RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double tolerance) const {
+    const double lo = interval.lo, hi = interval.hi;
+    if (!(hi > lo)) {
+        return miss(0);
+    }
+    bool finite = std::isfinite(lo) && std::isfinite(hi);
+    for (int i = 0; i < 3; ++i) {
+        finite = finite && std::isfinite(ray.origin[i]) && std::isfinite(ray.direction[i]);
+    }
+    if (!finite) {
+        RootResult r;
+        r.status = RootStatus::unknown;
+        r.reason = "a ray or interval that is not finite";
+        return r;
+    }
+    struct Segment {
+        double a, b;
+    };
+    std::array<Segment, kMaxSegments + 2> stack;
+    int top = 0;
+    stack[top++] = {lo, hi};
+    int work = 0;
+    int segments = 0;
+    while (top > 0) {
+        const Segment segment = stack[--top];
+        if (++segments > kMaxSegments) {
+            return exact(ray, interval, work);
+        }
+        const double a = segment.a, b = segment.b;
+        const RestrictionBall power = segment_ball(ray, a, b);
+        if (!power.certified) {
+            // Overflow over a very long segment: bound the roots first (Cauchy's bound on the
+            // restriction about a, when its leading coefficient is certainly not zero).
+            if (segments == 1) {
+                const RestrictionBall about_a = segment_ball(ray, a, a + 1.0);
+                const int n = about_a.polynomial.degree;
+                const double lead =
+                    n >= 0 ? std::abs(about_a.polynomial.c[n]) - about_a.radius[n] : 0.0;
+                if (about_a.certified && lead > 0.0) {
+                    double largest = 0.0;
+                    for (int k = 0; k < n; ++k) {
+                        largest = std::max(largest,
+                                           std::abs(about_a.polynomial.c[k]) + about_a.radius[k]);
+                    }
+                    const double reach = (1.0 + largest / lead) * (1.0 + 1e-9) + 1.0;
+                    if (std::isfinite(reach) && a + reach < b) {
+                        stack[top++] = {a, a + reach};
+                        ++work;
+                        continue;
+                    }
+                }
+            }
+            return exact(ray, interval, work);
+        }
+        const BernsteinBall ball = to_bernstein(power);
+        const Isolation isolation = isolate_first_root(ball, kSegmentDepth);
+        work += isolation.work;
+        const double margin = 4.0 * kUnit * std::max(std::abs(a), std::abs(b)) + kTiny;
+        const auto t_at = [&](double sigma) { return a + sigma * (b - a); };
+        if (isolation.kind == Isolation::Kind::no_root) {
+            continue;
+        }
+        if (isolation.kind == Isolation::Kind::one_root) {
+            const Piece piece{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo),
+                              t_at(isolation.hi), margin};
+            return narrow(ray, piece, tolerance, work);
+        }
+        // Undecided: a root at the very start (a ray starting on the surface) or a cluster of
+        // roots goes to the exact method; otherwise the piece is expanded again.
+        if (isolation.lo == 0.0 && a == lo && ball.sign(0) == 0) {
+            return exact(ray, interval, work);
+        }
+        const double piece_a = std::max(a, t_at(isolation.lo) - margin);
+        const double piece_b = std::min(b, t_at(isolation.hi) + margin);
+        if (!(piece_b - piece_a < 0.5 * (b - a)) || top + 2 > static_cast<int>(stack.size())) {
+            return exact(ray, interval, work);
+        }
+        if (isolation.hi < 1.0) {
+            stack[top++] = {std::max(a, t_at(isolation.hi) - margin), b};
+        }
+        stack[top++] = {piece_a, piece_b};
+    }
+    return miss(work);
+}
+
+RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0, double width,
+                                           const Ray& ray, Interval interval,
+                                           double tolerance) const {
+    if (!(interval.hi > interval.lo)) {
+        return miss(0);
+    }
+    // Cut the family's ball at the interval's start (σ = s0 of [t0, t0 + width]) and search
+    // the rest only up to its end: σ' ∈ [0, 1] is σ = s0 + σ'·(1 − s0).
+    const double s0 = std::max(0.0, (interval.lo - t0) / width);
+    const double s_hi = std::min(1.0, (interval.hi - t0) / width);
+    if (!(s_hi > s0)) {
+        return first_hit(ray, interval, tolerance);
+    }
+    BernsteinBall piece = ball;
+    if (s0 > 0.0) {
+        BernsteinBall left, right;
+        split_at(ball, s0, left, right);
+        piece = right;
+    }
+    const Isolation isolation = isolate_first_root(piece, kFamilyDepth, (s_hi - s0) / (1.0 - s0));
+    if (isolation.kind == Isolation::Kind::no_root) {
+        return miss(isolation.work);
+    }
+    if (isolation.kind == Isolation::Kind::undecided) {
+        RootResult alone = first_hit(ray, interval, tolerance);
+        alone.work += isolation.work;
+        return alone;
+    }
+    // t = t0 + (s0 + σ'·(1 − s0))·width, exact up to the rounding of the map.
+    const double margin = 8.0 * kUnit * (std::abs(t0) + std::abs(width)) + kTiny;
+    const auto t_at = [&](double sigma) { return t0 + (s0 + sigma * (1.0 - s0)) * width; };
+    const Piece found{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo), t_at(isolation.hi),
+                      margin};
+    RootResult result = narrow(ray, found, tolerance, isolation.work);
+    // The piece may reach past the interval: its one root is then the first in the interval
+    // only if it comes before the end.
+    if (result.status == RootStatus::hit && result.t > interval.hi) {
+        RootResult none = miss(result.work);
+        none.decided_by = result.decided_by;
+        return none;
+    }
+    return result;
+}
+
+}  // namespace locus::render

@@ -1,0 +1,66 @@
+// The certified first hit of a ray with a surface — the `certified` method, the default of
+// `locus render` and `locus trace`. Its contract (docs/rendering.md, "Accuracy"): for the exact
+// surface f = 0 (the rational equation) and the exact ray o + t·d (the doubles given), the
+// answer is
+//   * a hit t with |t − t*| ≤ tolerance·max(1, |t*|), where t* is the smallest root of
+//     F(t) = f(o + t·d) with lo < t ≤ hi — roots of every multiplicity, tangent touches
+//     included; or
+//   * a miss, only when F has no real root in (lo, hi].
+// Nothing depends on the interval's length or the surface's scale.
+//
+// How (three tiers, each taken only when the one before cannot decide):
+//  1. doubles with rigorous error bounds: the restriction of f to a segment of the ray with a
+//     radius per coefficient (LineRestrictor::restrict_with_bounds), in the Bernstein basis,
+//     roots isolated where no rounding can change the decision (certified_isolation.h); a
+//     segment the radii blur is expanded again about its undecided piece, where the terms are
+//     smaller;
+//  2. double-double evaluation of f at points of the ray (CompiledPolynomial::enclose_on_line)
+//     to narrow a root that doubles isolated but cannot place to the tolerance;
+//  3. exact arithmetic over Q (algebra::exact_first_root) for what neither decides: tangent
+//     rays, double roots, a root at the interval's start, rays lying in the surface.
+#pragma once
+
+#include "algebra/compiled.h"
+#include "render/bernstein_ball.h"
+#include "render/ray_restriction.h"
+#include "render/root_finder.h"
+#include "render/vec3.h"
+
+namespace locus::render {
+
+// The accuracy contract of `locus trace`: |t − t*| ≤ 1e-12·max(1, |t*|).
+inline constexpr double kTraceTolerance = 1e-12;
+// The renderer's: which root is hit (or none) is decided exactly as for `locus trace`, and the
+// hit is placed to 1e-9·max(1, |t*|) — a millionth of a pixel's depth step at 512², where
+// 1e-12 cost double-double evaluations for a third of the degree-12 surface's rays.
+inline constexpr double kRenderTolerance = 1e-9;
+
+class CertifiedTracer {
+  public:
+    // The polynomial must outlive the tracer.
+    explicit CertifiedTracer(const algebra::CompiledPolynomial& f);
+
+    // The first root in (interval.lo, interval.hi] to within `tolerance`·max(1, |t|), or a miss.
+    RootResult first_hit(const Ray& ray, Interval interval, double tolerance) const;
+
+    // The same, starting from a ball that a ray family computed for this ray: `ball` is the
+    // restriction G(σ) = F(t0 + σ·width), σ ∈ [0, 1], of the exact ray with rigorous radii,
+    // and [t0, t0 + width] ⊇ the interval to search. The ball's decision is used where it is
+    // certain; the ray is traced alone (first_hit) where it is not.
+    RootResult first_hit_from(const BernsteinBall& ball, double t0, double width, const Ray& ray,
+                              Interval interval, double tolerance) const;
+
+    // Statistics of the tiers (for tests and benchmarks) are in RootResult::decided_by.
+
+  private:
+    struct Piece;
+    RestrictionBall segment_ball(const Ray& ray, double a, double b) const;
+    RootResult narrow(const Ray& ray, const Piece& piece, double tolerance, int work) const;
+    RootResult exact(const Ray& ray, Interval interval, int work) const;
+
+    const algebra::CompiledPolynomial* f_;
+    LineRestrictor restrictor_;
+    double coefficient_error_;
+};
+
+}  // namespace locus::render

@@ -1,0 +1,61 @@
+#include "render/primary_tracer.h"
+
+#include <cmath>
+
+namespace locus::render {
+
+PrimaryTracer::PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera& camera,
+                             const ClipRegion& clip, int width, int height,
+                             const SurfaceTracer& tracer)
+    : tracer_(&tracer) {
+    const ClipSphere bounds = bounding_sphere(clip);
+    switch (tracer.method()) {
+    case TraceMethod::certified:
+        certified_ = std::make_unique<CertifiedRayFamily>(f, camera, bounds.center, bounds.radius,
+                                                          width, height);
+        family_ = certified_->certified() ? Family::certified : Family::none;
+        break;
+    case TraceMethod::sphere_gradient:
+    case TraceMethod::exact:
+        break;
+    default:
+        if (f.degree() <= kMaxFamilyDegree) {
+            floating_ = std::make_unique<RayFamily>(f, camera, bounds.center, width, height);
+            family_ = Family::floating;
+        }
+        break;
+    }
+}
+
+void PrimaryTracer::begin_row(double image_y, Row& row) const {
+    row.previous_hit = NAN;
+    if (family_ == Family::floating) {
+        floating_->expand_row(image_y, row.floating);
+    } else if (family_ == Family::certified) {
+        certified_->expand_row(image_y, row.certified);
+    }
+}
+
+RootResult PrimaryTracer::first_hit(Row& row, double image_x, const Ray& ray,
+                                    Interval interval) const {
+    RootResult hit;
+    switch (family_) {
+    case Family::floating:
+        RayFamily::restriction(row.floating, image_x, row.restriction);
+        hit = tracer_->first_hit(ray, interval, &row.restriction, floating_->origin_t(),
+                                 row.previous_hit);
+        break;
+    case Family::certified:
+        certified_->ball_at(row.certified, image_x, row.ball);
+        hit = tracer_->first_hit_from(row.ball, certified_->t_start(), certified_->t_width(), ray,
+                                      interval);
+        break;
+    case Family::none:
+        hit = tracer_->first_hit(ray, interval);
+        break;
+    }
+    row.previous_hit = hit.status == RootStatus::hit ? hit.t : NAN;
+    return hit;
+}
+
+}  // namespace locus::render
