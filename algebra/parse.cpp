@@ -112,9 +112,13 @@ template <class Value>
 class InfixParser {
   public:
     InfixParser(std::string_view text, const RingPtr& ring, std::size_t line, std::size_t column,
-                std::vector<std::size_t>* half_angle = nullptr)
-        : lexer_(text, line, column), ring_(ring), half_angle_(half_angle) {
+                Trigonometry* trigonometry = nullptr)
+        : lexer_(text, line, column), ring_(ring), trigonometry_(trigonometry) {
         token_ = lexer_.next();
+        if (trigonometry_ != nullptr) {
+            trigonometry_->inside.resize(ring_->num_vars());
+            trigonometry_->outside.resize(ring_->num_vars());
+        }
     }
 
     Value parse() {
@@ -234,6 +238,7 @@ class InfixParser {
             if (!var) {
                 fail("a declared variable");
             }
+            note_use(trigonometry_ != nullptr ? &trigonometry_->outside : nullptr, *var);
             token_ = lexer_.next();
             return Value::variable(ring_, *var);
         }
@@ -250,47 +255,122 @@ class InfixParser {
         fail("a number, a variable or '('");
     }
 
-    // sin(v) or cos(v) of a variable v, by the tangent half-angle substitution v -> tan(v/2):
-    // cos = (1 - v^2)/(1 + v^2), sin = 2v/(1 + v^2). Only rational functions, and only when the
-    // caller asked for it (half_angle_ collects the variables substituted).
+    void note_use(std::vector<Trigonometry::Use>* uses, std::size_t var) {
+        if (uses != nullptr && var < uses->size() && (*uses)[var].line == 0) {
+            (*uses)[var] = {token_.line, token_.column};
+        }
+    }
+
+    // sin(θ) or cos(θ) with θ an integer combination of variables: term (('+'|'-') term)*,
+    // term := ['+'|'-'] (integer '*' variable | variable ['*' integer]).
     Value trigonometric() {
         const Token function = token_;
         if constexpr (!std::is_same_v<Value, RationalFunction>) {
             fail("a declared variable (" + function.text + " is not a polynomial)");
         } else {
-            if (half_angle_ == nullptr) {
+            if (trigonometry_ == nullptr) {
                 fail("a declared variable (" + function.text + " is not allowed here)");
             }
+            const std::string expected_angle =
+                "an integer combination of parameters (sin and cos take, for example, u, 2*u or "
+                "u-v)";
             token_ = lexer_.next();
             if (!is_symbol('(')) {
                 fail("'(' after " + function.text);
             }
             token_ = lexer_.next();
-            const auto var = token_.kind == TokenKind::identifier
-                                 ? ring_->variable_index(token_.text)
-                                 : std::nullopt;
-            if (!var) {
-                fail("a parameter (sin and cos take a parameter itself, such as cos(u))");
+            std::vector<long> multiple(ring_->num_vars(), 0);
+            bool first = true;
+            while (first || is_symbol('+') || is_symbol('-')) {
+                long sign = 1;
+                if (is_symbol('+') || is_symbol('-')) {
+                    sign = is_symbol('-') ? -1 : 1;
+                    token_ = lexer_.next();
+                }
+                first = false;
+                long factor = 1;
+                if (token_.kind == TokenKind::number) {
+                    factor = small_integer(expected_angle);
+                    token_ = lexer_.next();
+                    if (!is_symbol('*')) {
+                        fail(expected_angle);
+                    }
+                    token_ = lexer_.next();
+                }
+                const auto var = token_.kind == TokenKind::identifier
+                                     ? ring_->variable_index(token_.text)
+                                     : std::nullopt;
+                if (!var) {
+                    fail(expected_angle);
+                }
+                note_use(&trigonometry_->inside, *var);
+                token_ = lexer_.next();
+                if (is_symbol('*')) {
+                    token_ = lexer_.next();
+                    if (token_.kind != TokenKind::number) {
+                        fail(expected_angle);
+                    }
+                    factor *= small_integer(expected_angle);
+                    token_ = lexer_.next();
+                }
+                multiple[*var] += sign * factor;
             }
-            token_ = lexer_.next();
             if (!is_symbol(')')) {
-                fail("')' (sin and cos take a parameter itself, such as cos(u))");
+                fail(
+                    "')' or '+'/'-' and a further multiple of a parameter (sin and cos take an "
+                    "integer combination of parameters)");
             }
             token_ = lexer_.next();
-            if (std::find(half_angle_->begin(), half_angle_->end(), *var) == half_angle_->end()) {
-                half_angle_->push_back(*var);
-            }
-            const Polynomial t = Polynomial::variable(ring_, *var);
-            const Polynomial one = Polynomial::constant(ring_, Rational(1));
-            const Polynomial denominator = one + t * t;
-            return function.text == "cos" ? RationalFunction(one - t * t, denominator)
-                                          : RationalFunction(Rational(2) * t, denominator);
+            return function.text == "cos" ? angle(multiple).first : angle(multiple).second;
         }
+    }
+
+    // An integer literal of at most 1000 (the multiple of an angle).
+    long small_integer(const std::string& expected) {
+        if (token_.text.find('.') != std::string::npos || token_.text.size() > 4 ||
+            std::stol(token_.text) > 1000) {
+            fail(expected + ", with multiples of at most 1000");
+        }
+        return std::stol(token_.text);
+    }
+
+    // cos θ and sin θ for θ = Σ multiple[v]·v, as the real and imaginary parts of
+    // Π e^{i·k·v} (conjugates for negative k).
+    std::pair<RationalFunction, RationalFunction> angle(const std::vector<long>& multiple) {
+        const Polynomial one = Polynomial::constant(ring_, Rational(1));
+        Polynomial re = one, im(ring_), denominator = one;
+        auto times = [&](const Polynomial& a, const Polynomial& b) {
+            // (re + i·im)·(a + i·b)
+            Polynomial next_re = re * a - im * b;
+            im = re * b + im * a;
+            re = std::move(next_re);
+        };
+        for (std::size_t v = 0; v < multiple.size(); ++v) {
+            const long k = multiple[v];
+            if (k == 0) {
+                continue;
+            }
+            const Rational sign(k > 0 ? 1 : -1);
+            if (trigonometry_->form == Trigonometry::Form::half_angle) {
+                const Polynomial t = Polynomial::variable(ring_, v);
+                for (long j = 0; j < 2 * std::abs(k); ++j) {
+                    times(one, sign * t);  // (1 ± i·t)^(2|k|)
+                }
+                denominator *= (one + t * t).pow(static_cast<unsigned>(std::abs(k)));
+            } else {
+                const Polynomial c = Polynomial::variable(ring_, trigonometry_->cos_of.at(v));
+                const Polynomial s = Polynomial::variable(ring_, trigonometry_->sin_of.at(v));
+                for (long j = 0; j < std::abs(k); ++j) {
+                    times(c, sign * s);  // (cos v ± i·sin v)^|k|
+                }
+            }
+        }
+        return {RationalFunction(re, denominator), RationalFunction(im, denominator)};
     }
 
     Lexer lexer_;
     const RingPtr& ring_;
-    std::vector<std::size_t>* half_angle_;
+    Trigonometry* trigonometry_;
     Token token_;
 };
 
@@ -317,8 +397,8 @@ Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::siz
 
 RationalFunction parse_rational_function(std::string_view text, const RingPtr& ring,
                                          std::size_t line, std::size_t first_column,
-                                         std::vector<std::size_t>* half_angle) {
-    return InfixParser<RationalFunction>(text, ring, line, first_column, half_angle).parse();
+                                         Trigonometry* trigonometry) {
+    return InfixParser<RationalFunction>(text, ring, line, first_column, trigonometry).parse();
 }
 
 std::vector<std::string> parse_name_list(std::string_view text, std::size_t line,

@@ -19,14 +19,35 @@ namespace locus::algebra {
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::size_t line = 1,
                             std::size_t first_column = 1);
 
+// How parse_rational_function reads sin(θ) and cos(θ), where θ is an integer combination of
+// the ring's variables such as u, 2*u, -v or u - 3*v (anything else inside sin or cos is a
+// ParseError). Multiple angles and sums come from e^{iθ} = Π e^{i·k·v}.
+struct Trigonometry {
+    enum class Form {
+        // Each angle v stands for tan(v/2) (the tangent half-angle substitution):
+        // e^{iv} = (1 + iv)²/(1 + v²), so cos v = (1 − v²)/(1 + v²), sin v = 2v/(1 + v²).
+        half_angle,
+        // cos v and sin v are variables of the ring, cos_of[v] and sin_of[v]; cos(θ) and sin(θ)
+        // are the real and imaginary parts of Π (cos v + i·sin v)^k, polynomials in them.
+        circle,
+    };
+    Form form = Form::half_angle;
+    std::vector<std::size_t> cos_of, sin_of;  // Form::circle: indexed by the angle's variable
+    // Filled by the parser (sized to the ring's variables): where each variable was first used
+    // inside sin or cos, and where as itself (line 0: not at all).
+    struct Use {
+        std::size_t line = 0, column = 0;
+    };
+    std::vector<Use> inside, outside;
+};
+
 // The same grammar, but `/` divides by any non-zero expression: a quotient of polynomials such
 // as `(1-t^2)/(1+t^2)`, returned in lowest terms. A divisor that is identically zero is a
-// ParseError at the divisor. With `half_angle`, sin(v) and cos(v) of a variable v are accepted
-// and replaced by the tangent half-angle forms 2v/(1+v^2) and (1-v^2)/(1+v^2) (v now standing
-// for tan(v/2)); the indices of such variables are appended to *half_angle.
+// ParseError at the divisor. With `trigonometry`, sin(θ) and cos(θ) are accepted and read as it
+// says; without, they are a ParseError.
 RationalFunction parse_rational_function(std::string_view text, const RingPtr& ring,
                                          std::size_t line = 1, std::size_t first_column = 1,
-                                         std::vector<std::size_t>* half_angle = nullptr);
+                                         Trigonometry* trigonometry = nullptr);
 
 // The contents of an ideal file: its ring (variables and order) and its generators in file
 // order (zero generators are dropped), with the line each generator came from.

@@ -122,34 +122,37 @@ int run_implicitize(const ImplicitizeArgs& args) {
                      u.c_str());
     }
     const std::size_t k = map.parameter_ring->num_vars();
+    // Verified before anything is printed: on the map as written (for angles, with
+    // sin(u)^2 + cos(u)^2 = 1, not through the substitution the elimination used).
+    const char* as_written = map.half_angle.empty()
+                                 ? "the parametrization"
+                                 : "the parametrization as written (sin^2 + cos^2 = 1)";
     if (r.equation) {
-        std::cout << algebra::format_polynomials(std::vector{*r.equation}, *r.ring, format);
-        std::cout.flush();
-        if (!implicit::vanishes_on(*r.equation, map)) {
+        if (!implicit::vanishes_on_map_as_written(*r.equation, map)) {
             throw CommandFailure(exit_check_failed,
                                  "verification FAILED: the equation does not vanish on the "
                                  "parametrization");
         }
+        std::cout << algebra::format_polynomials(std::vector{*r.equation}, *r.ring, format);
+        std::cout.flush();
         const algebra::Factorization fac = algebra::factor(*r.equation);
         const bool irreducible = fac.factors.size() == 1 && fac.factors[0].second == 1;
-        std::fprintf(stderr, "verified: vanishes identically on the parametrization\n");
+        std::fprintf(stderr, "verified: vanishes identically on %s\n", as_written);
         std::fprintf(stderr, "degree %ld, %zu terms, %s\n", r.equation->total_degree(),
                      r.equation->num_terms(), irreducible ? "irreducible" : "reducible");
         return exit_ok;
     }
-    std::cout << algebra::format_polynomials(r.generators, *r.ring, format);
-    std::cout.flush();
     for (const auto& g : r.generators) {
-        if (!implicit::vanishes_on(g, map)) {
+        if (!implicit::vanishes_on_map_as_written(g, map)) {
             throw CommandFailure(exit_check_failed,
                                  "verification FAILED for " + algebra::to_string(g));
         }
     }
-    std::fprintf(stderr,
-                 "not principal: %s\nverified: all %zu generators vanish on the "
-                 "parametrization\n",
+    std::cout << algebra::format_polynomials(r.generators, *r.ring, format);
+    std::cout.flush();
+    std::fprintf(stderr, "not principal: %s\nverified: all %zu generators vanish on %s\n",
                  implicit::describe_image(r.image, k, map.coordinates.size()).c_str(),
-                 r.generators.size());
+                 r.generators.size(), as_written);
     return exit_ok;
 }
 

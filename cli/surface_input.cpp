@@ -31,7 +31,7 @@ std::string implicit_equation_of(const std::string& param_path, Deadline deadlin
                                              implicit::describe_image(result.image, 2, 3) +
                                              "; there is no single equation to render");
     }
-    if (!implicit::vanishes_on(*result.equation, map)) {
+    if (!implicit::vanishes_on_map_as_written(*result.equation, map)) {
         throw CommandFailure(exit_check_failed,
                              param_path +
                                  ": verification FAILED: the implicit equation does "

@@ -16,6 +16,7 @@
 
 #include "algebra/groebner/buchberger.h"
 #include "implicit/parametrization.h"
+#include "implicit/verify.h"
 
 namespace locus::implicit {
 
@@ -79,10 +80,6 @@ ImplicitResult implicitize_by_interpolation(
 ImplicitResult implicitize_auto(const Parametrization& map,
                                 const algebra::GroebnerOptions& options = {},
                                 std::string* fallback_reason = nullptr);
-
-// Does f vanish identically on the parametrization? Substitutes xᵢ = pᵢ/qᵢ exactly:
-// Σ c_α Π pᵢ^αᵢ qᵢ^(dᵢ−αᵢ) must be the zero polynomial, with dᵢ the degree of f in xᵢ.
-bool vanishes_on(const algebra::Polynomial& f, const Parametrization& map);
 
 // Human-readable sentence for an ImageKind ("the image is a curve in space: ...").
 std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t num_coordinates);

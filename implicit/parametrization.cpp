@@ -80,6 +80,7 @@ Parametrization parse_parametrization(std::string_view text) {
     if (!have_params) {
         throw ParseError(last_line, 1, "a 'params:' line", "end of input");
     }
+    algebra::Trigonometry trigonometry;
     for (std::size_t i = 0; i < 3; ++i) {
         const Assignment& a = assignments[i];
         if (a.line == 0) {
@@ -101,7 +102,65 @@ Parametrization parse_parametrization(std::string_view text) {
         }
         result.coordinates.push_back(allowed[i]);
         result.components.push_back(algebra::parse_rational_function(
-            a.expression, result.parameter_ring, a.line, a.column, &result.half_angle));
+            a.expression, result.parameter_ring, a.line, a.column, &trigonometry));
+    }
+    // A parameter inside sin/cos must appear nowhere else: the substitution u -> tan(u/2) holds
+    // only where u stands for the angle alone, and a map such as (u·cos v, u·sin v, v) is not
+    // algebraic at all.
+    const std::size_t k = result.parameter_ring->num_vars();
+    for (std::size_t v = 0; v < k; ++v) {
+        const algebra::Trigonometry::Use inside = trigonometry.inside[v];
+        const algebra::Trigonometry::Use outside = trigonometry.outside[v];
+        if (inside.line != 0) {
+            result.half_angle.push_back(v);
+        }
+        if (inside.line != 0 && outside.line != 0) {
+            const std::string& name = result.parameter_ring->variable_name(v);
+            throw ParseError(outside.line, outside.column,
+                             "the angle " + name + " only inside sin and cos (it is used in " +
+                                 "sin/cos at line " + std::to_string(inside.line) + ", column " +
+                                 std::to_string(inside.column) +
+                                 "; a map that mixes an angle with its sine or cosine is not "
+                                 "algebraic)",
+                             "'" + name + "' outside sin and cos");
+        }
+    }
+    if (!result.half_angle.empty()) {
+        // The map as written: the parameters, then sin and cos of each angle (sin declared
+        // first, so that sin(u)^2 leads sin(u)^2 + cos(u)^2 − 1 under grevlex).
+        std::vector<std::string> names = result.parameter_ring->variable_names();
+        algebra::Trigonometry circle;
+        circle.form = algebra::Trigonometry::Form::circle;
+        circle.cos_of.assign(k, 0);
+        circle.sin_of.assign(k, 0);
+        // Named sin_u, cos_u (with '_' appended while a name is taken).
+        const auto fresh = [&](std::string name) {
+            while (std::find(names.begin(), names.end(), name) != names.end()) {
+                name += '_';
+            }
+            return name;
+        };
+        for (const std::size_t v : result.half_angle) {
+            const std::string& u = result.parameter_ring->variable_name(v);
+            circle.sin_of[v] = names.size();
+            names.push_back(fresh("sin_" + u));
+            circle.cos_of[v] = names.size();
+            names.push_back(fresh("cos_" + u));
+        }
+        result.circle_ring =
+            algebra::PolyRing::make(names, algebra::MonomialOrder::grevlex(names.size()));
+        for (std::size_t i = 0; i < result.coordinates.size(); ++i) {
+            const Assignment& a = assignments[i];
+            result.circle_components.push_back(algebra::parse_rational_function(
+                a.expression, result.circle_ring, a.line, a.column, &circle));
+        }
+        const algebra::Polynomial one =
+            algebra::Polynomial::constant(result.circle_ring, algebra::Rational(1));
+        for (const std::size_t v : result.half_angle) {
+            const auto s = algebra::Polynomial::variable(result.circle_ring, circle.sin_of[v]);
+            const auto c = algebra::Polynomial::variable(result.circle_ring, circle.cos_of[v]);
+            result.circle_relations.push_back(s * s + c * c - one);
+        }
     }
     return result;
 }

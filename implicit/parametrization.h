@@ -22,13 +22,22 @@ struct Parametrization {
     // Parameters that appeared inside sin()/cos() and were replaced by the tangent half-angle
     // substitution: parameter u now stands for tan(u/2) (indices into parameter_ring).
     std::vector<std::size_t> half_angle;
+    // The map as written, when some parameter is an angle: the components over the ring of
+    // the parameters and of sin u, cos u for every angle u (named sin_u and cos_u),
+    // where circle_relations (sin(u)^2 + cos(u)^2 − 1) hold. Empty for rational maps.
+    algebra::RingPtr circle_ring;
+    std::vector<algebra::RationalFunction> circle_components;
+    std::vector<algebra::Polynomial> circle_relations;
 };
 
 // Reads a parametrization file. Errors are ParseErrors with line and column: a missing
 // `params:` line, an undeclared parameter, a coordinate assigned twice or missing, a coordinate
-// other than x, y, z, a denominator that is identically zero, a function other than sin and cos
-// of a parameter. sin(u) and cos(u) are turned rational by the tangent half-angle substitution
-// (recorded in `half_angle`).
+// other than x, y, z, a denominator that is identically zero, a function other than sin and cos,
+// an argument of sin or cos that is not an integer combination of parameters, and a parameter
+// used both inside sin/cos and outside them (such a map is not algebraic: the helicoid
+// x = u·cos(v), y = u·sin(v), z = v has no implicit equation). sin and cos of multiple angles
+// and sums are expanded (e^{iθ} = Π e^{i·k·u}) and turned rational by the tangent half-angle
+// substitution (recorded in `half_angle`); the map as written is kept in `circle_components`.
 Parametrization parse_parametrization(std::string_view text);
 
 }  // namespace locus::implicit

@@ -93,6 +93,15 @@ expect "demo wrote its PNG" 0 "" -- test -s "$tmp/demo.png"
 expect "implicitize inline" 0 "verified" -- "$locus" implicitize -p s,t "x = s*t" "y = s" "z = t^2"
 printf 'params: t\nx = (1-t^2)/(1+t^2)\ny = 2*t/(1+t^2)\n' > "$tmp/circle.param"
 expect "implicitize file" 0 "" -- bash -c "\"$locus\" implicitize $tmp/circle.param 2>/dev/null | grep -qx 'x^2+y^2-1'"
+printf 'params: u,v\nx = u*cos(v)\ny = u*sin(v)\nz = v\n' > "$tmp/helicoid.param"
+expect "implicitize refuses the helicoid" 2 "line 4, column 5: expected the angle v only inside sin and cos" -- \
+    "$locus" implicitize "$tmp/helicoid.param"
+expect "implicitize refuses cos(u), u" 2 "the angle u only inside sin and cos" -- \
+    "$locus" implicitize -p u "x = cos(u)" "y = u"
+expect "implicitize expands multiple angles" 0 "" -- \
+    bash -c "\"$locus\" implicitize -p u 'x = cos(2*u)' 'y = sin(3*u)' 2>/dev/null | grep -qx '4\*x^3+2\*y^2-3\*x-1'"
+expect "implicitize verifies trigonometric maps as written" 0 "as written (sin^2 + cos^2 = 1)" -- \
+    "$locus" implicitize bench/data/implicit/torus_trig.param
 expect "implicitize not principal" 0 "not principal" -- "$locus" implicitize -p t "x=t" "y=t^2" "z=t^3"
 printf 'params: t\nx = t\nx = t^2\n' > "$tmp/twice.param"
 expect "implicitize bad input" 2 "line 3, column 1" -- "$locus" implicitize "$tmp/twice.param"

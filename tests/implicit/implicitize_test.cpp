@@ -182,7 +182,8 @@ TEST(Parametrization, BadInputsReportLineAndColumn) {
         {"params: t\nx = t\n", 3, 1, "an assignment 'y = ...'"},  // end of input: line 3
         {"params: t\nx = t/(t-t)\ny = t\n", 2, 7, "a non-zero divisor"},
         {"params: u\nx = tan(u)\ny = u\n", 2, 5, "tan is not supported yet"},
-        {"params: u\nx = cos(2*u)\ny = u\n", 2, 9, "sin and cos take a parameter itself"},
+        {"params: u\nx = cos(2*u)\ny = u\n", 3, 5, "the angle u only inside sin and cos"},
+        {"params: u\nx = cos(u+1)\ny = sin(u)\n", 2, 12, "an integer combination of parameters"},
         {"params: t\nw = t\n", 2, 1, "a coordinate x, y or z"},
         {"", 1, 1, "a 'params:' line"},
     };
