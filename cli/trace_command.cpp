@@ -89,7 +89,12 @@ int run_trace(const TraceArgs& args) {
 void add_trace_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<TraceArgs>();
     CLI::App* cmd = app.add_subcommand(
-        "trace", "First hit of rays (stdin: ox oy oz dx dy dz) with the surface f = 0");
+        "trace",
+        "First hit of rays (stdin: ox oy oz dx dy dz) with the surface f = 0.\n"
+        "With the default method (certified) and with exact, for the exact equation and the\n"
+        "exact ray: a hit t is within 1e-12*max(1,|t*|) of the smallest root t* in (0, t-max]\n"
+        "(tangent and singular contacts included); 'miss' only when there is no root there.\n"
+        "The other methods are floating-point estimates without that guarantee.");
     cmd->add_option("equation", args->equation, "f(x, y, z)")->required();
     cmd->add_option("--method", args->method,
                     "certified (default) | sturm | bernstein | laguerre | eigen | "

@@ -106,7 +106,10 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
     work += bracket.work;
     const double lower = at(bracket.lo) - m, upper = at(bracket.hi) + m;
     if (bracket.certified || upper - lower <= allowed) {
-        return hit(0.5 * (at(bracket.lo) + at(bracket.hi)), work, Decision::floating);
+        // Any point of the bracket keeps the contract; the midpoint polynomial's root is the
+        // one nearest the true root (and prints as `exact` does on a well-conditioned ray).
+        return hit(std::clamp(at(bracket.estimate), at(bracket.lo), at(bracket.hi)), work,
+                   Decision::floating);
     }
     // Tier 2: signs of F at points of the ray, evaluated from f at the point with a running
     // error bound in doubles — the error of the point's own terms, far below the ball's where
@@ -173,7 +176,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
             }
         }
         if (done()) {
-            return hit(0.5 * (left + right), work,
+            return hit(std::clamp(x, left, right), work,
                        precision == Precision::double_double ? Decision::double_double
                                                              : Decision::floating);
         }

@@ -306,7 +306,11 @@ TEST_P(OracleRays, CertifiedAnswersEveryRayRight) {
     }
     if (const char* path = std::getenv("LOCUS_ORACLE_CSV")) {
         const std::lock_guard<std::mutex> lock(csv_mutex);
+        const bool fresh = !std::ifstream(path).good() || std::ifstream(path).peek() == EOF;
         std::ofstream out(path, std::ios::app);
+        if (fresh) {
+            out << "surface,kind,method,rays,wrong,unknown\n";
+        }
         for (const auto& [key, tally] : tallies) {
             out << c.surface.name << ',' << key.second << ',' << to_string(key.first) << ','
                 << tally.rays << ',' << tally.wrong << ',' << tally.unknown << '\n';
