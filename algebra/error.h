@@ -37,11 +37,14 @@ class ParseError : public Error {
 class InputError : public Error {
   public:
     InputError(std::string what_or_where, std::string reason)
-        : Error(what_or_where + ": " + reason), subject_(std::move(what_or_where)) {}
+        : Error(what_or_where + ": " + reason),
+          subject_(std::move(what_or_where)),
+          reason_(std::move(reason)) {}
     const std::string& subject() const { return subject_; }
+    const std::string& reason() const { return reason_; }
 
   private:
-    std::string subject_;
+    std::string subject_, reason_;
 };
 
 // An exponent (or a weighted degree) left the packed range; never silently wrapped.
@@ -54,6 +57,13 @@ class ExponentOverflow : public Error {
 class MixedRings : public Error {
   public:
     MixedRings() : Error("operands belong to different polynomial rings") {}
+};
+
+// A documented size limit would be exceeded (a power with too many terms, an input too large):
+// refused before the work, not discovered by running out of memory.
+class ResourceLimit : public Error {
+  public:
+    explicit ResourceLimit(const std::string& what) : Error(what) {}
 };
 
 // A deadline passed; thrown only by operations that cannot return a partial result.

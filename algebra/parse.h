@@ -14,6 +14,10 @@
 
 namespace locus::algebra {
 
+// Parentheses may nest this deep (each level is a few stack frames of the recursive-descent
+// parser; deeper input is a ParseError at the parenthesis, not a stack overflow).
+inline constexpr int kMaxNesting = 1000;
+
 // Parses `text` as one polynomial of `ring`. Positions are reported relative to (line,
 // first_column), so that a caller parsing a fragment of a file reports file positions.
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, std::size_t line = 1,

@@ -287,6 +287,25 @@ Polynomial operator*(const Polynomial& a, const Polynomial& b) {
 }
 
 Polynomial Polynomial::pow(unsigned exponent) const {
+    if (exponent > 1 && num_terms() > 1) {
+        // Terms of p^k: at most C(n + k − 1, k) for n terms, and at most Π (k·deg_v + 1).
+        double multinomial = 1.0;
+        const double n = static_cast<double>(num_terms());
+        for (unsigned i = 1; i <= exponent && multinomial <= kMaxPowerTerms; ++i) {
+            multinomial *= (n - 1.0 + i) / i;
+        }
+        double ranges = 1.0;
+        for (std::size_t v = 0; v < ring_->num_vars() && ranges <= kMaxPowerTerms; ++v) {
+            ranges *= static_cast<double>(exponent) * std::max<long>(0, degree(v)) + 1.0;
+        }
+        const double bound = std::min(multinomial, ranges);
+        if (bound > kMaxPowerTerms) {
+            throw ResourceLimit(
+                "a power of a polynomial with " + std::to_string(num_terms()) +
+                " terms to the exponent " + std::to_string(exponent) + " could have more than " +
+                std::to_string(static_cast<long>(kMaxPowerTerms)) + " terms (the limit)");
+        }
+    }
     Polynomial result = constant(ring_, Rational(1));
     Polynomial base = *this;
     while (exponent > 0) {

@@ -19,6 +19,9 @@
 
 namespace locus::algebra {
 
+// The most terms Polynomial::pow will build.
+inline constexpr double kMaxPowerTerms = 1e7;
+
 class Polynomial {
   public:
     explicit Polynomial(RingPtr ring) : ring_(std::move(ring)) {}
@@ -66,6 +69,9 @@ class Polynomial {
                                 const Polynomial& g) const;
     // c·m·f.
     Polynomial times_term(const Rational& c, const std::uint64_t* m) const;
+    // Throws ResourceLimit when the power could have more than kMaxPowerTerms terms (the
+    // smaller of the multinomial count and the product of the degree ranges): (x+y+1)^32767
+    // is refused at once, not after gigabytes.
     Polynomial pow(unsigned exponent) const;
 
     Rational evaluate(std::span<const Rational> point) const;
