@@ -23,6 +23,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 #include "cli/render_bench.h"
 #include "cli/sdf_bench.h"
 #include "implicit/implicitize.h"
@@ -52,6 +53,7 @@ struct BenchArgs {
     std::vector<std::string> methods;
     std::string surf = "surf-alggeo-nox";
     std::string algorithm = "auto";  // groebner suite: as `locus groebner --algorithm`
+    ProcessLimitArgs limits;
 };
 
 struct Timing {
@@ -247,6 +249,19 @@ int run_implicit_bench(const BenchArgs& args) {
 }
 
 int run_bench(const BenchArgs& args) {
+    apply_process_limits(args.limits);
+    if (args.size < 1 || args.size > 4096) {
+        throw CommandFailure(exit_input, "--size '" + std::to_string(args.size) +
+                                             "': expected N from 1 to 4096 (N×N rays)");
+    }
+    if (args.threads < 0 || args.threads > 1024) {
+        throw CommandFailure(exit_input, "--threads '" + std::to_string(args.threads) +
+                                             "': expected a count from 1 to 1024, or 0 for "
+                                             "every core");
+    }
+    if (!(args.min_seconds >= 0.0) || !(args.min_seconds <= 3600.0)) {
+        throw CommandFailure(exit_input, "--min-seconds: expected seconds from 0 to 3600");
+    }
     if (args.suite == "implicit") {
         return run_implicit_bench(args);
     }
@@ -372,6 +387,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
         ->delimiter(',');
     cmd->add_option("--surf", args->surf,
                     "render suite: surf executable for the same-run reference, or 'off'");
+    add_process_limit_options(cmd, args->limits);
     cmd->callback([args, &exit_code] { exit_code = run_bench(*args); });
 }
 

@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstring>
 
 #include <cstdio>
 #include <cstdlib>
@@ -21,18 +22,92 @@
 
 namespace locus::cli {
 
+CommandFailure failure_about(const std::string& where, const Error& error) {
+    const int code = dynamic_cast<const Timeout*>(&error) != nullptr         ? exit_timeout
+                     : dynamic_cast<const ResourceLimit*>(&error) != nullptr ? exit_resource
+                                                                             : exit_input;
+    const std::string message = error.what();
+    const bool named = where.empty() || message.rfind(where + ": ", 0) == 0;
+    return CommandFailure(code, named ? message : where + ": " + message);
+}
+
 std::string read_input(const std::string& path) {
-    std::ostringstream text;
-    if (path == "-") {
-        text << std::cin.rdbuf();
-        return text.str();
+    const std::string name = path == "-" ? "<stdin>" : path;
+    if (path != "-") {
+        std::error_code error;
+        if (std::filesystem::is_directory(path, error)) {
+            throw CommandFailure(exit_input, path + ": is a directory, not a file");
+        }
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw CommandFailure(exit_input, path + ": cannot open file");
+    FILE* file = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
+    if (file == nullptr) {
+        throw CommandFailure(exit_input, path + ": cannot open file: " + std::strerror(errno));
     }
-    text << in.rdbuf();
-    return text.str();
+    struct Closer {
+        FILE* file;
+        ~Closer() {
+            if (file != stdin) {
+                std::fclose(file);
+            }
+        }
+    } closer{file};
+    // Read in chunks, checking as it comes that this is UTF-8 text: garbage (/dev/zero,
+    // /dev/urandom, a binary file) is refused at its first bad byte, not after reading it all.
+    std::string text;
+    std::size_t line = 1, column = 1;
+    int continuation = 0;  // UTF-8 continuation bytes still expected
+    char buffer[1 << 16];
+    for (;;) {
+        const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto byte = static_cast<unsigned char>(buffer[i]);
+            bool bad = false;
+            if (continuation > 0) {
+                bad = (byte & 0xC0) != 0x80;
+                --continuation;
+            } else if (byte >= 0x80) {
+                continuation = byte >= 0xF0 && byte < 0xF8   ? 3
+                               : byte >= 0xE0 && byte < 0xF0 ? 2
+                               : byte >= 0xC2 && byte < 0xE0 ? 1
+                                                             : -1;
+                bad = continuation < 0;
+            } else {
+                bad = (byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r' &&
+                       byte != '\f' && byte != '\v') ||
+                      byte == 0x7F;
+            }
+            if (bad) {
+                char code[16];
+                std::snprintf(code, sizeof code, "0x%02X", byte);
+                throw CommandFailure(exit_input, name + ": line " + std::to_string(line) +
+                                                     ", column " + std::to_string(column) +
+                                                     ": expected UTF-8 text, found the byte " +
+                                                     code);
+            }
+            if (byte == '\n') {
+                ++line;
+                column = 1;
+            } else if ((byte & 0xC0) != 0x80) {
+                ++column;
+            }
+        }
+        if (text.size() + n > kMaxInputBytes) {
+            throw CommandFailure(exit_resource, name + ": input larger than the limit of " +
+                                                    std::to_string(kMaxInputBytes >> 20) + " MiB");
+        }
+        text.append(buffer, n);
+        if (n < sizeof buffer) {
+            break;
+        }
+    }
+    if (std::ferror(file)) {
+        throw CommandFailure(exit_input, name + ": cannot read: " + std::strerror(errno));
+    }
+    // A UTF-8 byte order mark is not part of the text.
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) {
+        text.erase(0, 3);
+    }
+    return text;
 }
 
 algebra::IdealFile read_ideal(const std::string& path,
@@ -42,8 +117,8 @@ algebra::IdealFile read_ideal(const std::string& path,
     algebra::IdealFile file;
     try {
         file = algebra::parse_ideal_file(text);
-    } catch (const Error& e) {  // ParseError, InputError, ExponentOverflow
-        throw CommandFailure(exit_input, name + ": " + e.what());
+    } catch (const Error& e) {  // ParseError, InputError, ExponentOverflow, ResourceLimit
+        throw failure_about(name, e);
     }
     if (order_override) {
         try {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "algebra/error.h"
 #include "algebra/groebner/buchberger.h"
 #include "algebra/parse.h"
 
@@ -23,7 +24,17 @@ class CommandFailure : public std::runtime_error {
     int code_;
 };
 
-// The whole of a file, or of standard input for "-". Throws CommandFailure (exit 2).
+// The CommandFailure for a library error about `where` (a file name, an option): exit 3 for a
+// Timeout, 5 for a ResourceLimit, 2 otherwise, with "where: " in front unless the message
+// already names it (no "scene.toml: scene.toml: …").
+CommandFailure failure_about(const std::string& where, const Error& error);
+
+// Inputs larger than this are refused (exit code 5) as they are read.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
+
+// The whole of a file, or of standard input for "-", which must be UTF-8 text (a byte order
+// mark is dropped). Throws CommandFailure: exit 2 for a missing file, a directory or a byte
+// that is not text (with its line and column), exit 5 past kMaxInputBytes.
 std::string read_input(const std::string& path);
 
 // Reads an ideal file; parse errors are prefixed with the file name. `order_override` (the

@@ -13,6 +13,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 #include "implicit/implicitize.h"
 #include "render/image_output.h"
 #include "render/scene_file.h"
@@ -138,9 +139,11 @@ int run_demo(const std::string& output) {
     render::ExecutionSettings execution;
     execution.aovs = false;  // the demo writes the picture only
     const render::RenderedImage image = render::render_sdf_scene(scene, {}, execution, &stats);
+    register_partial_file(render::partial_path(output), output);
     render::write_image(image, output);
+    unregister_partial_file(render::partial_path(output));
     std::printf(
-        "\nRendered %dx%d in an SDF scene (the surface by Sturm isolation, five primitives "
+        "\nRendered %dx%d in an SDF scene (the surface by certified isolation, five primitives "
         "sphere-traced; soft shadows, 2x2 samples) in %.3f s: %s\n",
         scene.width, scene.height, stats.seconds, output.c_str());
     return exit_ok;
@@ -150,10 +153,20 @@ int run_demo(const std::string& output) {
 
 void add_demo_command(CLI::App& app, int& exit_code) {
     auto output = std::make_shared<std::string>("locus-demo.png");
+    auto limits = std::make_shared<ProcessLimitArgs>();
     CLI::App* cmd = app.add_subcommand(
         "demo", "Implicitize Steiner's Roman surface and render it standing in an SDF scene");
     cmd->add_option("-o,--output", *output, "image file (default locus-demo.png)");
-    cmd->callback([output, &exit_code] { exit_code = run_demo(*output); });
+    add_process_limit_options(cmd, *limits);
+    cmd->callback([output, limits, &exit_code] {
+        apply_process_limits(*limits);
+        try {
+            render::check_image_path(*output);
+        } catch (const Error& e) {
+            throw failure_about("", e);
+        }
+        exit_code = run_demo(*output);
+    });
 }
 
 }  // namespace locus::cli

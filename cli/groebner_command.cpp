@@ -13,6 +13,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 
 namespace locus::cli {
 namespace {
@@ -27,7 +28,7 @@ struct GroebnerArgs {
     bool no_certify = false;
     bool stats = false;
     bool check = false;
-    double timeout_seconds = 0;
+    ProcessLimitArgs limits;
     int threads = 0;  // for the certification; 0 = all hardware threads
 };
 
@@ -83,6 +84,7 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
 }
 
 int run_groebner(const GroebnerArgs& args) {
+    const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = [&] {
         try {
             return algebra::parse_output_format(args.format);
@@ -102,7 +104,7 @@ int run_groebner(const GroebnerArgs& args) {
         throw CommandFailure(exit_input, "--selection " + args.selection +
                                              ": expected auto, sugar, degree or normal");
     }
-    options.deadline = deadline_after(args.timeout_seconds);
+    options.deadline = deadline;
     if (args.threads < 0) {
         throw CommandFailure(exit_input, "--threads " + std::to_string(args.threads) +
                                              ": expected a positive count, or 0 for all cores");
@@ -127,7 +129,7 @@ int run_groebner(const GroebnerArgs& args) {
             basis = algebra::groebner_modulo(ideal.generators, args.prime, f4_options, &f4_stats);
         } catch (const Timeout&) {
             throw CommandFailure(exit_timeout,
-                                 "timeout: F4 stopped after " + seconds_text(args.timeout_seconds));
+                                 "timeout: F4 stopped after " + timeout_text(args.limits));
         } catch (const InputError& e) {
             throw CommandFailure(exit_input, e.what());
         }
@@ -167,15 +169,14 @@ int run_groebner(const GroebnerArgs& args) {
     } catch (const Timeout&) {
         finish_progress();
         throw CommandFailure(exit_timeout, "timeout: the modular algorithm stopped after " +
-                                               seconds_text(args.timeout_seconds));
+                                               timeout_text(args.limits));
     }
     if (result.outcome == algebra::GroebnerOutcome::stopped_timeout) {
         if (args.stats) {
             print_stats(result, *ideal.ring);
         }
-        throw CommandFailure(exit_timeout, "timeout: stopped after " +
-                                               seconds_text(args.timeout_seconds) + " with " +
-                                               std::to_string(result.basis.size()) +
+        throw CommandFailure(exit_timeout, "timeout: stopped after " + timeout_text(args.limits) +
+                                               " with " + std::to_string(result.basis.size()) +
                                                " basis elements; the basis is not complete");
     }
     std::cout << algebra::format_polynomials(result.basis, *ideal.ring, format);
@@ -233,7 +234,7 @@ void add_groebner_command(CLI::App& app, int& exit_code) {
     cmd->add_flag("--stats", args->stats, "print statistics to standard error");
     cmd->add_flag("--check", args->check,
                   "verify independently: generators and S-pairs reduce to zero, basis reduced");
-    cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
+    add_process_limit_options(cmd, args->limits);
     cmd->add_option("--threads", args->threads,
                     "threads for the certification of the modular route (0: all cores, the "
                     "default; the benchmarks use 1)");

@@ -10,6 +10,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 
 namespace locus::cli {
 namespace {
@@ -20,7 +21,7 @@ struct IdealArgs {
     std::string second;  // a second ideal file, a polynomial, or a variable list
     std::optional<std::string> order;
     std::string format = "normalized";
-    double timeout_seconds = 0;
+    ProcessLimitArgs limits;
 };
 
 // The generators of `path`, moved into `ring` (same variable names, any declared order).
@@ -59,6 +60,13 @@ int answer(bool yes) {
 
 int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options) {
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
+    const bool second_is_file = args.operation != "member" && args.operation != "radical-member" &&
+                                args.operation != "eliminate" && args.operation != "dimension";
+    if (args.first == "-" && second_is_file && args.second == "-") {
+        throw CommandFailure(exit_input, "ideal " + args.operation +
+                                             ": standard input can be read only once; give a "
+                                             "file for one of the two ideals");
+    }
     const algebra::IdealFile ideal = read_ideal(args.first, args.order);
     const algebra::RingPtr& ring = ideal.ring;
     const auto& gens = ideal.generators;
@@ -74,6 +82,12 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     const bool needs_second = op != "dimension";
     if (needs_second && args.second.empty()) {
         throw CommandFailure(exit_input, "ideal " + op + ": missing second argument");
+    }
+    if (!needs_second && !args.second.empty()) {
+        throw CommandFailure(exit_input, "ideal " + op +
+                                             ": takes one ideal file, found a second "
+                                             "argument '" +
+                                             args.second + "'");
     }
     if (op == "member") {
         const auto cert =
@@ -96,7 +110,14 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     }
     if (op == "eliminate") {
         std::vector<std::size_t> vars;
-        for (const auto& name : algebra::parse_name_list(args.second, 1, 1)) {
+        const std::vector<std::string> names = [&] {
+            try {
+                return algebra::parse_name_list(args.second, 1, 1);
+            } catch (const Error& e) {
+                throw failure_about("eliminate: the variables '" + args.second + "'", e);
+            }
+        }();
+        for (const auto& name : names) {
             const auto v = ring->variable_index(name);
             if (!v) {
                 throw CommandFailure(exit_input, "eliminate: '" + name + "' is not a variable");
@@ -149,13 +170,13 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
 
 int run_ideal(const IdealArgs& args) {
     algebra::GroebnerOptions options;
-    options.deadline = deadline_after(args.timeout_seconds);
+    options.deadline = apply_process_limits(args.limits);
     options.progress = terminal_progress("ideal " + args.operation);
     try {
         return run_operation(args, options);
     } catch (const Timeout& e) {
-        throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
-                                               seconds_text(args.timeout_seconds) + ")");
+        throw CommandFailure(
+            exit_timeout, std::string(e.what()) + " (--timeout " + timeout_text(args.limits) + ")");
     }
 }
 
@@ -183,7 +204,7 @@ void add_ideal_command(CLI::App& app, int& exit_code) {
     cmd->add_option("argument", args->second, "second ideal file, polynomial or variables");
     cmd->add_option("--order", args->order, "override the first file's order");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
-    cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
+    add_process_limit_options(cmd, args->limits);
     cmd->callback([args, &exit_code] { exit_code = run_ideal(*args); });
 }
 

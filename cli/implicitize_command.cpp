@@ -11,6 +11,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 #include "implicit/implicitize.h"
 
 namespace locus::cli {
@@ -21,10 +22,11 @@ struct ImplicitizeArgs {
     std::string params;
     std::string format = "normalized";
     std::string method = "auto";
-    double timeout_seconds = 0;
+    ProcessLimitArgs limits;
 };
 
 int run_implicitize(const ImplicitizeArgs& args) {
+    const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
     if (args.method != "auto" && args.method != "groebner" && args.method != "resultant" &&
         args.method != "interpolate") {
@@ -51,10 +53,10 @@ int run_implicitize(const ImplicitizeArgs& args) {
     try {
         map = implicit::parse_parametrization(text);
     } catch (const Error& e) {
-        throw CommandFailure(exit_input, source + ": " + e.what());
+        throw failure_about(source, e);
     }
     algebra::GroebnerOptions options;
-    options.deadline = deadline_after(args.timeout_seconds);
+    options.deadline = deadline;
     options.progress = terminal_progress("implicitize");
     std::optional<implicit::ImplicitResult> found;
     if (args.method == "auto") {
@@ -63,42 +65,6 @@ int run_implicitize(const ImplicitizeArgs& args) {
         if (!fallback_reason.empty()) {
             std::fprintf(stderr, "faster routes gave up (%s)\n", fallback_reason.c_str());
         }
-    } else if (args.method == "resultant" && args.timeout_seconds > 0) {
-        // FLINT's resultants cannot be interrupted: under --timeout the route runs in a
-        // child process that is killed at the deadline, and its equation comes back as text.
-        // The first character tells success ('=') or which error ('I' input, 'E' other).
-        const ChildOutcome outcome = run_in_child(args.timeout_seconds, [&]() -> std::string {
-            try {
-                return "=" + algebra::to_string(*implicit::implicitize_by_resultant(map).equation);
-            } catch (const InputError& e) {
-                return std::string("I") + e.what();
-            } catch (const Error& e) {
-                return std::string("E") + e.what();
-            }
-        });
-        if (outcome.timed_out) {
-            finish_progress();
-            throw CommandFailure(exit_timeout, "timeout: the resultant route stopped after " +
-                                                   seconds_text(args.timeout_seconds));
-        }
-        if (!outcome.text || outcome.text->empty()) {
-            throw Error("the resultant route failed in its child process");
-        }
-        const std::string body = outcome.text->substr(1);
-        if ((*outcome.text)[0] == 'I') {
-            throw CommandFailure(exit_input, body);
-        }
-        if ((*outcome.text)[0] == 'E') {
-            throw Error(body);
-        }
-        implicit::ImplicitResult r;
-        r.method = "resultant";
-        r.ring = algebra::PolyRing::make(map.coordinates,
-                                         algebra::MonomialOrder::grevlex(map.coordinates.size()));
-        r.equation = algebra::parse_polynomial(body, r.ring);
-        r.generators = {*r.equation};
-        r.stats.seconds = outcome.seconds;
-        found = std::move(r);
     } else if (args.method == "resultant") {
         found = implicit::implicitize_by_resultant(map);
     } else if (args.method == "interpolate") {
@@ -171,7 +137,7 @@ void add_implicitize_command(CLI::App& app, int& exit_code) {
                     "auto (groebner for 0.2 s, then interpolation, then resultant, for plane "
                     "curves and surfaces) | groebner | resultant | interpolate");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
-    cmd->add_option("--timeout", args->timeout_seconds, "give up after SECONDS (exit code 3)");
+    add_process_limit_options(cmd, args->limits);
     cmd->callback([args, &exit_code] { exit_code = run_implicitize(*args); });
 }
 

@@ -271,7 +271,7 @@ int run_render_bench(const RenderBenchArgs& args) {
         render::Scene scene;
         scene.width = scene.height = args.size;
         scene.surfaces.push_back(
-            {s.equation, "", render::ClipSphere{{0, 0, 0}, s.clip_radius}, {}});
+            {s.equation, "", render::ClipSphere{{0, 0, 0}, s.clip_radius}, {}, ""});
         const render::Camera camera(render::default_camera(scene), args.size, args.size);
         const render::ClipRegion region = scene.surfaces[0].clip;
         const render::PrimaryRays reference = render::trace_primary_rays(

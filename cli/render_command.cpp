@@ -3,12 +3,14 @@
 // the interface benchmarks and comparisons with other renderers rely on.
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "algebra/error.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 #include "cli/surface_input.h"
 #include "render/image_output.h"
 #include "render/renderer.h"
@@ -25,9 +27,9 @@ struct RenderArgs {
     std::string size, eye, target, up, background, shadows, ao;
     std::optional<double> fov, clip_radius;
     std::string method;
-    int samples = 0;
-    int threads = -1;
-    double timeout_seconds = 0;
+    std::optional<int> samples;
+    std::optional<int> threads;
+    ProcessLimitArgs limits;
     std::vector<std::string> aovs;
 };
 
@@ -98,11 +100,11 @@ void apply_flags(const RenderArgs& args, render::Scene& scene) {
     if (!args.method.empty()) {
         scene.options.method = render::parse_trace_method(args.method);
     }
-    if (args.samples != 0) {
-        if (args.samples < 1 || args.samples > 16) {
-            bad_flag("--samples", std::to_string(args.samples), "N from 1 to 16 (N×N per pixel)");
+    if (args.samples) {
+        if (*args.samples < 1 || *args.samples > 16) {
+            bad_flag("--samples", std::to_string(*args.samples), "N from 1 to 16 (N×N per pixel)");
         }
-        scene.options.samples = args.samples;
+        scene.options.samples = *args.samples;
     }
     if (!args.shadows.empty()) {
         scene.options.shadows = parse_on_off("--shadows", args.shadows);
@@ -112,9 +114,19 @@ void apply_flags(const RenderArgs& args, render::Scene& scene) {
     }
     if (!args.background.empty()) {
         scene.background = parse_triple("--background", args.background);
+        for (int i = 0; i < 3; ++i) {
+            if (scene.background[i] < 0.0 || scene.background[i] > 1.0) {
+                bad_flag("--background", args.background,
+                         "a linear colour R,G,B with each value from 0 to 1");
+            }
+        }
     }
-    if (args.threads >= 0) {
-        scene.options.threads = args.threads;
+    if (args.threads) {
+        if (*args.threads < 0 || *args.threads > 1024) {
+            bad_flag("--threads", std::to_string(*args.threads),
+                     "a count from 1 to 1024, or 0 for every core");
+        }
+        scene.options.threads = *args.threads;
     }
 }
 
@@ -137,15 +149,19 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
         } catch (const Timeout&) {
             throw;  // an implicitization ran past --timeout: not a fault of the file
         } catch (const Error& e) {
-            throw CommandFailure(exit_input, args.input + ": " + e.what());
+            throw failure_about(args.input, e);
         } catch (const CommandFailure& e) {
             // An algebraic leaf that failed to implicitize or compile.
-            throw CommandFailure(e.code(), args.input + ": " + e.what());
+            const std::string message = e.what();
+            throw CommandFailure(e.code(), message.rfind(args.input + ": ", 0) == 0
+                                               ? message
+                                               : args.input + ": " + message);
         }
     } else {
         render::Surface surface;
         if (args.param.empty()) {
             surface.equation = args.input;
+            surface.source = "equation";
         } else {
             surface.param_file = args.param;
         }
@@ -157,7 +173,7 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
 
 int run_render(const RenderArgs& args) {
     // The limit covers implicitizing `param` surfaces as well as rendering.
-    const Deadline deadline = deadline_after(args.timeout_seconds);
+    const Deadline deadline = apply_process_limits(args.limits);
     render::ExecutionSettings execution;
     execution.progress = terminal_fraction_progress("render");
     execution.deadline = deadline;
@@ -166,23 +182,48 @@ int run_render(const RenderArgs& args) {
     render::RenderStats stats;
     render::RenderedImage image;
     try {
+        render::check_image_path(args.output);
+    } catch (const Error& e) {
+        throw failure_about("", e);
+    }
+    // Registered from the start, so that a timeout in any phase says that nothing was written.
+    const std::string partial = render::partial_path(args.output);
+    register_partial_file(partial, args.output);
+    try {
         scene = build_scene(args, deadline);
         for (const std::string& name : args.aovs) {
             aovs.push_back(render::parse_aov(name));
         }
         execution.aovs = !aovs.empty();
-        const std::vector<algebra::CompiledPolynomial> compiled = compile_surfaces(scene, deadline);
+        const std::vector<algebra::CompiledPolynomial> compiled = [&] {
+            try {
+                return compile_surfaces(scene, deadline);
+            } catch (const CommandFailure& e) {
+                // A scene file's surface: say which file.
+                const std::string message = e.what();
+                if (args.input.ends_with(".toml") && message.rfind(args.input, 0) != 0) {
+                    throw CommandFailure(e.code(), args.input + ": " + message);
+                }
+                throw;
+            }
+        }();
         execution.threads = scene.options.threads;
         image = scene.objects.empty()
                     ? render::render(scene, compiled, execution, &stats)
                     : render::render_sdf_scene(scene, compiled, execution, &stats);
     } catch (const Timeout& e) {
         throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
-                                               seconds_text(args.timeout_seconds) +
-                                               "); no image written");
+                                               timeout_text(args.limits) +
+                                               "); nothing written to '" + args.output + "'");
     }
     finish_progress();
     const std::vector<std::string> written = render::write_image(image, args.output, aovs);
+    unregister_partial_file(partial);
+    if (stats.hits == 0) {
+        std::fprintf(stderr,
+                     "locus: warning: no ray hit a surface: every surface lies outside its clip "
+                     "region or out of the camera's view (see --clip-radius, --eye, --target)\n");
+    }
     std::fprintf(stderr,
                  "rendered %dx%d, %d×%d samples, method %s: %.3f s, %.2f M primary rays/s, "
                  "%ld hits, %ld undecided rays\n",
@@ -226,8 +267,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--ao", args->ao, "ambient occlusion: on | off (default)");
     cmd->add_option("--background", args->background, "background colour R,G,B (linear, 0..1)");
     cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
-    cmd->add_option("--timeout", args->timeout_seconds,
-                    "give up after SECONDS, writing no image (exit code 3)");
+    add_process_limit_options(cmd, args->limits);
     cmd->add_option("--aov", args->aovs, "also write depth | normal | work as <stem>.<aov>.exr")
         ->delimiter(',');
     cmd->callback([args, &exit_code] { exit_code = run_render(*args); });

@@ -16,7 +16,7 @@ std::string implicit_equation_of(const std::string& param_path, Deadline deadlin
     try {
         map = implicit::parse_parametrization(text);
     } catch (const Error& e) {
-        throw CommandFailure(exit_input, param_path + ": " + e.what());
+        throw failure_about(param_path, e);
     }
     if (map.coordinates.size() != 3 || map.parameter_ring->num_vars() != 2) {
         throw CommandFailure(exit_input, param_path +
@@ -48,8 +48,11 @@ algebra::CompiledPolynomial compile_equation(const std::string& name, const std:
     algebra::CompiledPolynomial compiled = [&] {
         try {
             return algebra::compile_surface(equation);
+        } catch (const InputError& e) {
+            // compile_surface names its subject "equation", which `name` already says.
+            throw failure_about(name, e.subject() == "equation" ? InputError(name, e.reason()) : e);
         } catch (const Error& e) {
-            throw CommandFailure(exit_input, name + ": " + e.what());
+            throw failure_about(name, e);
         }
     }();
     if (compiled.made_square_free()) {
@@ -63,11 +66,13 @@ std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene, 
     std::vector<algebra::CompiledPolynomial> compiled;
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         render::Surface& surface = scene.surfaces[i];
-        const std::string name = "surface[" + std::to_string(i + 1) + "]";
+        const std::string name = !surface.source.empty()
+                                     ? surface.source
+                                     : "surface[" + std::to_string(i + 1) + "].equation";
         if (!surface.param_file.empty()) {
             surface.equation = implicit_equation_of(surface.param_file, deadline);
         }
-        compiled.push_back(compile_equation(name + ".equation", surface.equation, "rendering"));
+        compiled.push_back(compile_equation(name, surface.equation, "rendering"));
     }
     return compiled;
 }

@@ -2,6 +2,8 @@
 // polynomials, shared by `locus render`, `locus trace` and `locus bench render`.
 #pragma once
 
+#include "cli/process_limits.h"
+
 #include <chrono>
 #include <optional>
 #include <string>
@@ -11,8 +13,6 @@
 #include "render/scene.h"
 
 namespace locus::cli {
-
-using Deadline = std::optional<std::chrono::steady_clock::time_point>;
 
 // The implicit equation of the parametrization in `param_path` (implicitize --method auto),
 // verified by substitution; reports the route and the equation on standard error. Throws

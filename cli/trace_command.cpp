@@ -12,6 +12,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/process_limits.h"
 #include "cli/surface_input.h"
 #include "render/surface_tracer.h"
 
@@ -22,9 +23,11 @@ struct TraceArgs {
     std::string equation;
     std::string method = "certified";
     double t_max = 100.0;
+    ProcessLimitArgs limits;
 };
 
 int run_trace(const TraceArgs& args) {
+    apply_process_limits(args.limits);
     const render::TraceMethod method = render::parse_trace_method(args.method);
     if (!(args.t_max > 0.0) || !std::isfinite(args.t_max)) {
         throw CommandFailure(exit_input, "--t-max: expected a positive number");
@@ -101,6 +104,7 @@ void add_trace_command(CLI::App& app, int& exit_code) {
                     "sphere-gradient | "
                     "sphere-lipschitz | exact");
     cmd->add_option("--t-max", args->t_max, "search t in (0, T] (default 100)");
+    add_process_limit_options(cmd, args->limits);
     cmd->callback([args, &exit_code] { exit_code = run_trace(*args); });
 }
 

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <iterator>
 
 #include <dlfcn.h>
+#include <unistd.h>  // for access
 
 #include "algebra/error.h"
 #include "render/shading.h"
@@ -47,12 +50,22 @@ WriteFunction image_writer() {
 }
 #endif
 
+// Written under partial_path(path) and renamed when complete, so that a failure (a full disk,
+// a timeout) never leaves a truncated image under the name asked for.
 void write_channels(const std::string& path, int width, int height, int channels, const void* data,
                     bool data_is_float, bool file_is_half) {
     char error[512] = "";
-    if (image_writer()(path.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
+    const std::string partial = partial_path(path);
+    if (image_writer()(partial.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
                        file_is_half ? 1 : 0, error, sizeof error) != 0) {
-        throw Error("cannot write '" + path + "': " + error);
+        std::remove(partial.c_str());
+        throw ResourceLimit("cannot write '" + path + "': " + error);
+    }
+    std::error_code failure;
+    std::filesystem::rename(partial, path, failure);
+    if (failure) {
+        std::remove(partial.c_str());
+        throw ResourceLimit("cannot write '" + path + "': " + failure.message());
     }
 }
 
@@ -64,6 +77,42 @@ bool is_float_format(const std::string& path) {
 }
 
 }  // namespace
+
+std::string partial_path(const std::string& path) {
+    const std::filesystem::path p(path);
+    return (p.parent_path() / (".locus-partial." + p.filename().string())).string();
+}
+
+void check_image_path(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    static const char* const known[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr",
+                                        ".hdr", ".ppm", ".pnm",  ".bmp", ".tga",  ".webp"};
+    if (std::find(std::begin(known), std::end(known), extension) == std::end(known)) {
+        throw InputError("output '" + path + "'",
+                         extension.empty()
+                             ? "no extension to name the image format (.png, .exr, .tif, ...)"
+                             : "unknown image format '" + extension +
+                                   "'; expected .png, .jpg, .tif, .exr, .hdr, .ppm, .bmp, "
+                                   ".tga or .webp");
+    }
+    const std::filesystem::path directory = std::filesystem::path(path).has_parent_path()
+                                                ? std::filesystem::path(path).parent_path()
+                                                : std::filesystem::path(".");
+    std::error_code failure;
+    if (!std::filesystem::is_directory(directory, failure)) {
+        throw InputError("output '" + path + "'",
+                         "the folder '" + directory.string() + "' does not exist");
+    }
+    if (access(directory.c_str(), W_OK) != 0) {
+        throw InputError("output '" + path + "'",
+                         "the folder '" + directory.string() + "' is not writable");
+    }
+    if (std::filesystem::is_directory(path, failure)) {
+        throw InputError("output '" + path + "'", "is a folder");
+    }
+}
 
 Aov parse_aov(const std::string& name) {
     if (name == "depth") {

@@ -16,8 +16,15 @@ enum class Aov { depth, normal, work };
 // "depth", "normal", "work"; anything else is an InputError.
 Aov parse_aov(const std::string& name);
 
-// Throws locus::Error with OpenImageIO's message when a file cannot be written. Returns the
-// paths written, the colour image first.
+// Throws InputError unless `path` names a known image format (by its extension) in an existing,
+// writable folder: checked before rendering, so that a bad -o costs nothing.
+void check_image_path(const std::string& path);
+
+// Where an image is written before it is complete: ".locus-partial.NAME" beside it.
+std::string partial_path(const std::string& path);
+
+// Throws ResourceLimit with OpenImageIO's message when a file cannot be written (nothing is
+// left under its name). Returns the paths written, the colour image first.
 std::vector<std::string> write_image(const RenderedImage& image, const std::string& path,
                                      const std::vector<Aov>& aovs = {});
 

@@ -15,6 +15,10 @@
 
 namespace locus::render {
 
+// The largest image rendered (8192×8192: 0.8 GB of colour and 1.3 GB more with the AOVs);
+// larger ones are a ResourceLimit before anything is allocated.
+inline constexpr double kMaxImagePixels = 8192.0 * 8192.0;
+
 // Linear-light colour plus the per-pixel arbitrary output variables (AOVs).
 struct RenderedImage {
     int width = 0;

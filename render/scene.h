@@ -43,6 +43,7 @@ struct Surface {
     std::string param_file;  // or a .param file, implicitized by the caller (cli/)
     ClipRegion clip = ClipSphere{};
     Material material;
+    std::string source;  // where it was given, for messages ("line 4, column 12: surface[1]")
 };
 
 struct RenderOptions {

@@ -36,6 +36,8 @@ Surface read_surface(const toml::table& table, const std::string& path) {
     }
     s.equation = equation.value_or("");
     s.param_file = param.value_or("");
+    const toml::node* given = table.get(equation ? "equation" : "param");
+    s.source = position(*given) + ": " + path + (equation ? "equation" : "param");
     const std::string shape = r.text("clip").value_or("sphere");
     if (shape == "sphere") {
         ClipSphere sphere;
@@ -74,6 +76,10 @@ Light read_light(const toml::table& table, const std::string& path) {
         light.direction = glm::normalize(light.direction);
     } else if (type == "point") {
         light.kind = Light::Kind::point;
+        if (table.get("position") == nullptr) {
+            throw InputError(position(table) + ": " + path + "position",
+                             "a point light needs a position");
+        }
         light.position = r.vector("position", light.position);
     } else {
         throw InputError(position(*table.get("type")) + ": " + path + "type",
@@ -114,6 +120,11 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
         spec.up = rc.vector("up", spec.up);
         spec.fov_degrees = rc.number("fov", spec.fov_degrees, true);
         rc.finish();
+        if (spec.eye == spec.target) {
+            const toml::node* at = camera->get("eye") ? camera->get("eye") : camera->get("target");
+            throw InputError(position(at != nullptr ? *at : *camera) + ": camera.eye",
+                             "the eye must differ from the target");
+        }
         scene.camera = spec;
     }
     if (const toml::array* lights = r.array_of_tables("light")) {

@@ -14,6 +14,13 @@
 namespace locus::render::detail {
 
 RenderedImage blank_image(int width, int height, bool aovs) {
+    const double pixels_asked = static_cast<double>(width) * height;
+    if (pixels_asked > kMaxImagePixels) {
+        throw ResourceLimit("an image of " + std::to_string(width) + "x" + std::to_string(height) +
+                            " pixels is more than the limit of " +
+                            std::to_string(static_cast<long>(kMaxImagePixels)) +
+                            " pixels (8192x8192)");
+    }
     RenderedImage image;
     image.width = width;
     image.height = height;

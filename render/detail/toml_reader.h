@@ -124,10 +124,10 @@ class TableReader {
         }
         Vec3 v;
         for (int i = 0; i < 3; ++i) {
-            const std::optional<double> value =
-                (*array)[static_cast<std::size_t>(i)].value<double>();
+            const toml::node& element = (*array)[static_cast<std::size_t>(i)];
+            const std::optional<double> value = element.value<double>();
             if (!value || !std::isfinite(*value)) {
-                fail(*node, key, "an array of three numbers");
+                fail(element, key, "an array of three finite numbers");
             }
             v[i] = *value;
         }

@@ -3,25 +3,9 @@
 # Usage: tests/cli/cli_test.sh PATH/TO/locus   (run from the source root; ctest does this)
 set -uo pipefail
 locus="$1"
-failures=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-
-# expect NAME EXPECTED_EXIT PATTERN_IN_OUTPUT -- COMMAND...
-expect() {
-    local name="$1" code="$2" pattern="$3"
-    shift 4
-    local out
-    out=$("$@" 2>&1)
-    local got=$?
-    if [[ $got -ne $code ]]; then
-        echo "FAIL $name: exit $got, expected $code"; echo "$out" | head -5; failures=$((failures + 1))
-    elif [[ -n "$pattern" ]] && ! grep -qF -- "$pattern" <<<"$out"; then
-        echo "FAIL $name: output lacks '$pattern'"; echo "$out" | head -5; failures=$((failures + 1))
-    else
-        echo "ok   $name"
-    fi
-}
+source "$(dirname "$0")/expect.sh"
 
 known=tests/data/known
 expect "groebner prints the expected basis" 0 "" -- \
@@ -147,14 +131,14 @@ expect "render: unknown node type names the node" 2 "badtree.toml: line 4, colum
     "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
 expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
     "$locus" bench sdf --size 16 --min-seconds 0 --csv
-expect "render --timeout covers implicitizing --param" 3 "no image written" -- \
+expect "render --timeout covers implicitizing --param" 3 "nothing written to" -- \
     "$locus" render --param bench/data/implicit/bezier_triangle3.param --timeout 0.01 \
     -o "$tmp/bezier.png" --size 16x16
-expect "render timeout exits 3 and writes nothing" 3 "no image written" -- \
+expect "render timeout exits 3 and writes nothing" 3 "nothing written to" -- \
     "$locus" render "x^2+y^2+z^2-1" --method exact --size 400x400 --samples 3 --timeout 0.05 \
     -o "$tmp/timeout.png"
 if [[ -e "$tmp/timeout.png" ]]; then
-    echo "FAIL render timeout wrote an image"; failures=$((failures + 1))
+    fail "render timeout wrote an image"
 fi
 expect "bench render compares sturm with exact, ray by ray" 0 "sphere,2,sturm,default,0,64," -- \
     "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
@@ -166,11 +150,11 @@ bench_row=$("$locus" bench render --size 8 --cases sphere --methods sturm --surf
     --min-seconds 0 --csv 2>/dev/null | grep '^sphere,2,sturm,')
 if [[ $(head -1 <<<"$bench_row" | awk -F, '{print NF}') != 19 ]] ||
     ! grep -qE '^sphere,2,sturm,default,0,64,[^,]+,[^,]+,[^,]+,0,0,0,.*,-1,[0-9.e+-]+,-1$' <<<"$bench_row"; then
-    echo "FAIL bench render CSV row: $bench_row"; failures=$((failures + 1))
+    fail "bench render CSV row: $bench_row"
 else
-    echo "ok   bench render CSV row"
+    echo "ok   bench render CSV row"; passes=$((passes + 1))
 fi
-expect "resultant honours --timeout" 3 "timeout: the resultant route stopped after 1 s" -- \
+expect "resultant honours --timeout" 3 "timeout: stopped after 1 s" -- \
     "$locus" implicitize bench/data/implicit/bezier_triangle3.param --method resultant --timeout 1
 expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z" -- \
     "$locus" implicitize bench/data/implicit/steiner_roman.param --method resultant --timeout 20
@@ -179,5 +163,4 @@ expect "trace prints hits and misses" 0 "" -- bash -c \
 expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a decimal number" -- \
     bash -c "printf '0 0 5 0 0 -1\n0 0 5 x 0 -1\n' | \"$locus\" trace 'x^2+y^2+z^2-1'"
 
-echo "$((55 - failures)) passed, $failures failed"
-[[ $failures -eq 0 ]]
+summary

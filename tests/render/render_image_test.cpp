@@ -20,7 +20,7 @@ Scene sphere_scene(TraceMethod method) {
     Light light;
     light.direction = glm::normalize(Vec3{0.3, 0.4, 1.0});
     scene.lights = {light};
-    scene.surfaces.push_back({"x^2+y^2+z^2-1", "", ClipSphere{}, Material{}});
+    scene.surfaces.push_back({"x^2+y^2+z^2-1", "", ClipSphere{}, Material{}, ""});
     scene.options.method = method;
     scene.options.shadows = false;
     scene.options.threads = 2;
@@ -69,7 +69,7 @@ TEST(Render, NoPixelIsNanAtSingularPoints) {
     for (const char* equation : {"4*(x^2+y^2+z^2)+16*x*y*z-1", "x^2-y^2*z"}) {
         Scene scene;
         scene.width = scene.height = 48;
-        scene.surfaces.push_back({equation, "", ClipSphere{}, Material{}});
+        scene.surfaces.push_back({equation, "", ClipSphere{}, Material{}, ""});
         scene.options.ambient_occlusion = true;
         scene.options.ambient_occlusion_samples = 4;
         scene.options.samples = 2;
