@@ -46,6 +46,14 @@ Parametrization parse_parametrization(std::string_view text) {
                                      "'" + key + ":'");
                 }
                 const auto names = algebra::parse_name_list(raw.substr(colon + 1), line, colon + 2);
+                for (const std::string& name : names) {
+                    if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) {
+                        const std::size_t at = raw.find(name, colon + 1);
+                        throw ParseError(line, at + 1,
+                                         "parameter names other than the coordinates x, y, z",
+                                         "'" + name + "'");
+                    }
+                }
                 result.parameter_ring =
                     algebra::PolyRing::make(names, algebra::MonomialOrder::grevlex(names.size()));
                 have_params = true;
