@@ -5,7 +5,7 @@ JOBS ?= 2
 BUILD := build/$(PRESET)
 LOCUS := $(BUILD)/cli/locus
 
-.PHONY: all deps configure build demo test bench notebooks format clean
+.PHONY: all deps configure build demo test fuzz bench notebooks format clean
 
 all: build
 
@@ -23,6 +23,11 @@ demo: build
 
 test: build
 	ctest --preset $(PRESET) -j $(JOBS)
+
+# The libFuzzer targets (tests/fuzz), FUZZ_SECONDS each (CI: 20).
+FUZZ_SECONDS ?= 60
+fuzz:
+	scripts/run-fuzzers --seconds $(FUZZ_SECONDS)
 
 bench: build
 	$(LOCUS) bench groebner

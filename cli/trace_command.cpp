@@ -14,6 +14,7 @@
 #include "cli/exit_codes.h"
 #include "cli/process_limits.h"
 #include "cli/surface_input.h"
+#include "render/ray_line.h"
 #include "render/surface_tracer.h"
 
 namespace locus::cli {
@@ -38,40 +39,16 @@ int run_trace(const TraceArgs& args) {
     std::size_t line_number = 0;
     while (std::getline(std::cin, line)) {
         ++line_number;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+        std::optional<render::Ray> parsed;
+        try {
+            parsed = render::parse_ray_line(line, line_number);
+        } catch (const Error& e) {
+            throw failure_about("<stdin>", e);
+        }
+        if (!parsed) {
             continue;
         }
-        std::array<double, 6> values{};
-        const char* cursor = line.c_str();
-        for (std::size_t i = 0; i < 6; ++i) {
-            while (*cursor == ' ' || *cursor == '\t') {
-                ++cursor;
-            }
-            char* end = nullptr;
-            values[i] = std::strtod(cursor, &end);
-            if (end == cursor || !std::isfinite(values[i])) {
-                throw CommandFailure(exit_input,
-                                     "<stdin>: line " + std::to_string(line_number) + ", column " +
-                                         std::to_string(cursor - line.c_str() + 1) +
-                                         ": expected a decimal number (ray: ox oy oz dx dy dz)");
-            }
-            cursor = end;
-        }
-        while (*cursor == ' ' || *cursor == '\t' || *cursor == '\r') {
-            ++cursor;
-        }
-        if (*cursor != '\0') {
-            throw CommandFailure(exit_input, "<stdin>: line " + std::to_string(line_number) +
-                                                 ", column " +
-                                                 std::to_string(cursor - line.c_str() + 1) +
-                                                 ": expected the end of the line after six "
-                                                 "numbers");
-        }
-        const render::Ray ray{{values[0], values[1], values[2]}, {values[3], values[4], values[5]}};
-        if (ray.direction == render::Vec3(0.0)) {
-            throw CommandFailure(exit_input, "<stdin>: line " + std::to_string(line_number) +
-                                                 ": the direction is zero");
-        }
+        const render::Ray& ray = *parsed;
         // (0, t-max]: SurfaceTracer intervals are open at their start.
         const render::Interval interval{0.0, args.t_max};
         const render::RootResult hit = tracer.first_hit(ray, interval);

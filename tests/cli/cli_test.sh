@@ -160,7 +160,7 @@ expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*
     "$locus" implicitize bench/data/implicit/steiner_roman.param --method resultant --timeout 20
 expect "trace prints hits and misses" 0 "" -- bash -c \
     "printf '0 0 5 0 0 -1\n3 3 3 1 0 0\n' | \"$locus\" trace 'x^2+y^2+z^2-1' --method exact | diff - <(printf '4\nmiss\n')"
-expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a decimal number" -- \
+expect "trace: bad ray names line and column" 2 "line 2, column 7: expected a finite decimal number (ray: ox oy oz dx dy dz), found 'x'" -- \
     bash -c "printf '0 0 5 0 0 -1\n0 0 5 x 0 -1\n' | \"$locus\" trace 'x^2+y^2+z^2-1'"
 
 summary
