@@ -134,7 +134,7 @@ void add_implicitize_command(CLI::App& app, int& exit_code) {
         ->required();
     cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
     cmd->add_option("--method", args->method,
-                    "auto (groebner for 0.2 s, then interpolation, then resultant, for plane "
+                    "auto (groebner for 20 ms, then interpolation, then resultant, for plane "
                     "curves and surfaces) | groebner | resultant | interpolate");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
     add_process_limit_options(cmd, args->limits);
