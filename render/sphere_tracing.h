@@ -4,11 +4,11 @@
 //  * gradient: steps by |f(p)| / |∇f(p)|, the first-order distance *estimate*. It is cheap and
 //    good far from the surface, but it is not a bound: near high curvature, thin features or
 //    singular points it can step past a root (it catches a sign change and bisects back, but
-//    two roots jumped over together are lost). Documented as BoundKind::estimate.
+//    two roots jumped over together are lost). An estimate (sdf::DistanceKind::estimate).
 //  * lipschitz: steps on the restriction F(t) by |F(t)| / L, where L bounds |F'| on the
 //    window [t, t + h] from the Taylor coefficients of F at t (|F'(t+s)| ≤ Σ j|b_j| h^(j−1)).
-//    The step never passes a root (BoundKind::bound); the window adapts so that L stays tight,
-//    which makes convergence to a simple root quadratic.
+//    The step never passes a root (a bound, sdf::DistanceKind::bound); the window adapts so that L
+//    stays tight, which makes convergence to a simple root quadratic.
 #pragma once
 
 #include "algebra/compiled.h"

@@ -20,9 +20,6 @@ enum class TraceMethod {
     exact,             // certified: exact F over Q, Descartes isolation, exact bisection
 };
 
-// Whether a sphere-tracing distance is guaranteed never to step past the surface.
-enum class BoundKind { bound, estimate };
-
 // "certified", "sturm", "bernstein", "laguerre", "eigen", "sphere-gradient", "sphere-lipschitz",
 // "exact"; anything else is an InputError that lists the valid names.
 TraceMethod parse_trace_method(std::string_view name);

@@ -2,19 +2,20 @@
 // glm::dvec3 (double, since the root finders and the exact reference work in double).
 #pragma once
 
+#include <array>
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
-
-#include "algebra/compiled.h"
 
 namespace locus::render {
 
 using Vec3 = glm::dvec3;
 
-inline algebra::Point3 to_point(const Vec3& v) {
+// To and from algebra::Point3 (the same std::array type), without including algebra/ here.
+inline std::array<double, 3> to_point(const Vec3& v) {
     return {v.x, v.y, v.z};
 }
-inline Vec3 to_vec(const algebra::Point3& p) {
+inline Vec3 to_vec(const std::array<double, 3>& p) {
     return {p[0], p[1], p[2]};
 }
 

@@ -52,7 +52,8 @@ const ClassicCase classic_cases[] = {
      "params: u,v\nx = 2*u/(1+u^2+v^2)\ny = 2*v/(1+u^2+v^2)\nz = (u^2+v^2-1)/(1+u^2+v^2)\n",
      "x^2+y^2+z^2-1"},
     {"saddle_xyz", "params: s,t\nx = s*t\ny = s\nz = t\n", "y*z-x"},
-    {"crosscap", "params: s,t\nx = s*t\ny = s\nz = t^2\n", "y^2*z-x^2"},
+    // The cylinder over the cusp: x³ = s⁶ = y², whatever z.
+    {"cusp_cylinder", "params: s,t\nx = s^2\ny = s^3\nz = t\n", "x^3-y^2"},
     {"lemniscate", "params: t\nx = t*(1+t^2)/(1+t^4)\ny = t*(1-t^2)/(1+t^4)\n",
      "(x^2+y^2)^2-x^2+y^2"},
     {"cardioid", "params: t\nx = 2*(1-t^2)/(1+t^2)^2\ny = 4*t/(1+t^2)^2\n",
