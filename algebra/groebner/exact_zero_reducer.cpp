@@ -64,33 +64,15 @@ std::uint32_t ExactZeroReducer::column(const std::uint64_t* m) {
         values_.emplace_back();
         mpz_init(&values_.back());
         pending_.push_back(0);
-        row_of_column_.push_back(kNotLookedUp);
+        reducer_rows_.add_column();
     }
     return c;
 }
 
 std::int32_t ExactZeroReducer::row_of(std::uint32_t c) {
-    if (row_of_column_[c] != kNotLookedUp) {
-        return row_of_column_[c];
-    }
-    const std::size_t w = layout_.words();
-    // Copied: numbering new columns below may move the table's storage.
-    std::vector<std::uint64_t> monomial(table_.at(c), table_.at(c) + w);
-    const long k = search_.find(monomial.data(), layout_);
-    if (k < 0) {
-        row_of_column_[c] = kIrreducible;
-        return kIrreducible;
-    }
-    const IntegerPolynomial& g = basis_[static_cast<std::size_t>(k)].poly;
-    layout_.divide(monomial.data(), g.monomial(0, w), multiplier_.data());
-    const Row row{static_cast<std::size_t>(k), row_columns_.size()};
-    for (std::size_t j = 1; j < g.size(); ++j) {
-        layout_.multiply(g.monomial(j, w), multiplier_.data(), product_.data());
-        row_columns_.push_back(column(product_.data()));
-    }
-    rows_.push_back(row);
-    row_of_column_[c] = static_cast<std::int32_t>(rows_.size() - 1);
-    return row_of_column_[c];
+    return reducer_rows_.row_of(c, table_, search_, layout_, basis_, multiplier_.data(),
+                                product_.data(),
+                                [this](const std::uint64_t* m) { return column(m); });
 }
 
 void ExactZeroReducer::push(std::uint32_t c) {
@@ -138,7 +120,7 @@ bool ExactZeroReducer::reduce_loaded(ReductionCounts& counts) {
         const std::int32_t r = row_of(c);  // may number new columns: values_ may move
         __mpz_struct* values = values_.data();
         mpz_ptr lc = &values[c];
-        if (r == kIrreducible) {
+        if (r == ReducerRows::kIrreducible) {
             mpz_set_ui(lc, 0);
             clear_pending();
             return false;
@@ -161,7 +143,7 @@ bool ExactZeroReducer::reduce_loaded(ReductionCounts& counts) {
             }
             bits_after_content = mpz_sizeinbase(lc, 2);
         }
-        const Row& row = rows_[static_cast<std::size_t>(r)];
+        const ReducerRows::Row row = reducer_rows_.row(r);
         mpz_srcptr reducer_lc = &leading_coefficients_[row.element];
         mpz_gcd(gcd_, lc, reducer_lc);
         mpz_divexact(a_, reducer_lc, gcd_);  // positive: leading coefficients are positive
@@ -175,7 +157,7 @@ bool ExactZeroReducer::reduce_loaded(ReductionCounts& counts) {
         mpz_set_ui(lc, 0);
         // a·p − b·m·g: the leading terms cancel; the rest of g lands on the row's columns.
         const IntegerPolynomial& g = basis_[row.element].poly;
-        const std::uint32_t* columns = row_columns_.data() + row.offset;
+        const std::uint32_t* columns = reducer_rows_.columns_of(row);
         for (std::size_t j = 1; j < g.size(); ++j) {
             const std::uint32_t column = columns[j - 1];
             addmul(&values[column], b_, g.coefficients[j].get());

@@ -27,6 +27,7 @@
 
 #include <gmp.h>
 
+#include "algebra/groebner/reducer_rows.h"
 #include "algebra/groebner/reduction.h"
 #include "algebra/monomial_table.h"
 
@@ -56,16 +57,8 @@ class ExactZeroReducer {
     std::size_t columns() const { return table_.size(); }
 
   private:
-    // A reducer row: the basis element and, for its terms after the leading one, the columns
-    // of their products with the multiplier (in row_columns_ from `offset`).
-    struct Row {
-        std::size_t element;
-        std::size_t offset;
-    };
-    static constexpr std::int32_t kNotLookedUp = -2, kIrreducible = -1;
-
     std::uint32_t column(const std::uint64_t* m);
-    // Index in rows_ of the row that reduces `column`, or kIrreducible; found on first use.
+    // reducer_rows_.row_of for this reducer's table and basis.
     std::int32_t row_of(std::uint32_t column);
     // acc[column(m·t)] += factor·c for every term c·t of `p` from `from` on.
     void add_multiple(const mpz_t factor, const std::uint64_t* m, const IntegerPolynomial& p,
@@ -85,9 +78,7 @@ class ExactZeroReducer {
     MonomialTable table_;
     std::vector<__mpz_struct> values_;   // by column; zero outside a reduction
     std::vector<std::uint8_t> pending_;  // the column is in heap_
-    std::vector<std::int32_t> row_of_column_;
-    std::vector<Row> rows_;
-    std::vector<std::uint32_t> row_columns_;
+    ReducerRows reducer_rows_;
     std::vector<std::uint32_t> heap_;  // columns, largest monomial on top
 
     mpz_t gcd_, a_, b_, content_;

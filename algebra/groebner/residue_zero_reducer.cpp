@@ -158,7 +158,7 @@ std::uint32_t ResidueZeroReducer::column(const std::uint64_t* m) {
         level().values.resize(level().values.size() + lanes(), 0);
         bound_.push_back(lb::kZero);
         pending_.push_back(0);
-        row_of_column_.push_back(kNotLookedUp);
+        reducer_rows_.add_column();
         rank_.push_back(0);
         const auto at = ordered_.insert(c).first;
         const std::uint64_t below = at == ordered_.begin() ? 0 : rank_[*std::prev(at)];
@@ -178,27 +178,9 @@ std::uint32_t ResidueZeroReducer::column(const std::uint64_t* m) {
 }
 
 std::int32_t ResidueZeroReducer::row_of(std::uint32_t c) {
-    if (row_of_column_[c] != kNotLookedUp) {
-        return row_of_column_[c];
-    }
-    const std::size_t w = layout_.words();
-    // Copied: numbering new columns below may move the table's storage.
-    std::vector<std::uint64_t> monomial(table_.at(c), table_.at(c) + w);
-    const long k = search_.find(monomial.data(), layout_);
-    if (k < 0) {
-        row_of_column_[c] = kIrreducible;
-        return kIrreducible;
-    }
-    const IntegerPolynomial& g = basis_[static_cast<std::size_t>(k)].poly;
-    layout_.divide(monomial.data(), g.monomial(0, w), multiplier_.data());
-    const Row row{static_cast<std::size_t>(k), row_columns_.size()};
-    for (std::size_t j = 1; j < g.size(); ++j) {
-        layout_.multiply(g.monomial(j, w), multiplier_.data(), product_.data());
-        row_columns_.push_back(column(product_.data()));
-    }
-    rows_.push_back(row);
-    row_of_column_[c] = static_cast<std::int32_t>(rows_.size() - 1);
-    return row_of_column_[c];
+    return reducer_rows_.row_of(c, table_, search_, layout_, basis_, multiplier_.data(),
+                                product_.data(),
+                                [this](const std::uint64_t* m) { return column(m); });
 }
 
 void ResidueZeroReducer::push(std::uint32_t c) {
@@ -307,13 +289,13 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
             continue;
         }
         const std::int32_t r = row_of(c);  // may number new columns: values_ may move
-        if (r == kIrreducible) {
+        if (r == ReducerRows::kIrreducible) {
             std::fill_n(value(c), width, 0);
             bound_[c] = lb::kZero;
             clear_pending();
             return false;
         }
-        const Row row = rows_[static_cast<std::size_t>(r)];
+        const ReducerRows::Row row = reducer_rows_.row(r);
         const Element& e = elements_[row.element];
         const ElementLanes& el = level().elements[row.element];
         const std::uint32_t* s = value(c);
@@ -344,7 +326,7 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
         const lb::Units b_bound = true_bound(c) - gcd_lower;
         const lb::Units offset = scaled ? offset_ + lb::upper(cofactor_) : offset_;
         const std::size_t length = basis_[row.element].poly.size() - 1;
-        const std::uint32_t* columns = row_columns_.data() + row.offset;
+        const std::uint32_t* columns = reducer_rows_.columns_of(row);
         const lb::Units capacity = level().system->capacity();
         // Bounds relative to the new offset (those of bound_ are: multiplying by a moves only
         // the offset). Every new bound is at most the sum of the highest pending one and the

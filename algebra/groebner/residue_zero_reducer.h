@@ -42,6 +42,7 @@
 #include <gmp.h>
 
 #include "algebra/groebner/log_bound.h"
+#include "algebra/groebner/reducer_rows.h"
 #include "algebra/groebner/reduction.h"
 #include "algebra/groebner/residue_system.h"
 #include "algebra/monomial_table.h"
@@ -93,14 +94,6 @@ class ResidueZeroReducer {
     const Statistics& statistics() const { return statistics_; }
 
   private:
-    // A reducer row: the basis element and, for its terms after the leading one, the columns
-    // of their products with the multiplier (in row_columns_ from `offset`).
-    struct Row {
-        std::size_t element;
-        std::size_t offset;
-    };
-    static constexpr std::int32_t kNotLookedUp = -2, kIrreducible = -1;
-
     // What the reducer knows of a basis element's integers, independent of the lanes.
     struct Element {
         mpz_t leading;                              // L > 0
@@ -132,7 +125,7 @@ class ResidueZeroReducer {
     };
 
     std::uint32_t column(const std::uint64_t* m);
-    // Index in rows_ of the row that reduces `column`, or kIrreducible; found on first use.
+    // reducer_rows_.row_of for this reducer's table and basis.
     std::int32_t row_of(std::uint32_t column);
     Level& level() { return *active_; }
     std::uint32_t* value(std::uint32_t column) { return level().values.data() + column * lanes(); }
@@ -173,9 +166,7 @@ class ResidueZeroReducer {
     Statistics statistics_;
 
     MonomialTable table_;
-    std::vector<std::int32_t> row_of_column_;
-    std::vector<Row> rows_;
-    std::vector<std::uint32_t> row_columns_;
+    ReducerRows reducer_rows_;
     std::vector<std::uint32_t> heap_;    // columns, largest monomial on top
     std::vector<std::uint8_t> pending_;  // the column is in heap_
     // The columns in the monomial order, and for each a rank that grows with it, so that the
