@@ -19,8 +19,10 @@
 
 namespace locus::algebra {
 
-// The most terms Polynomial::pow will build.
+// The most terms Polynomial::pow will build, and the most term products it will multiply out
+// (a few seconds: the coefficients of such powers have hundreds of bits).
 inline constexpr double kMaxPowerTerms = 1e7;
+inline constexpr double kMaxPowerWork = 1e7;
 
 class Polynomial {
   public:
@@ -70,8 +72,9 @@ class Polynomial {
     // c·m·f.
     Polynomial times_term(const Rational& c, const std::uint64_t* m) const;
     // Throws ResourceLimit when the power could have more than kMaxPowerTerms terms (the
-    // smaller of the multinomial count and the product of the degree ranges): (x+y+1)^32767
-    // is refused at once, not after gigabytes.
+    // smaller of the multinomial count and the product of the degree ranges), or when its last
+    // multiplication could take more than kMaxPowerWork term products: (x+y+1)^32767 and
+    // (1+s^2+t^2)^555 are refused at once, not after gigabytes or minutes.
     Polynomial pow(unsigned exponent) const;
 
     Rational evaluate(std::span<const Rational> point) const;

@@ -496,8 +496,10 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         group->candidate = reconstruct(*group, ring);
         s.lift_seconds += seconds_since(lift_start);
     }
-    throw InputError("modular Gröbner basis",
-                     "no stable lift after " + std::to_string(options.max_primes) + " primes");
+    throw ResourceLimit("modular Gröbner basis: no stable lift after " +
+                        std::to_string(options.max_primes) +
+                        " primes (coefficients of about 15 bits per prime; use --algorithm "
+                        "signature or buchberger)");
 }
 
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,

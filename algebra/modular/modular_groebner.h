@@ -29,7 +29,7 @@ struct ModularOptions {
     bool certify = true;
     // The primes to try first, in order (tests force unlucky ones); then primes below 2³¹.
     std::vector<std::uint32_t> primes;
-    // Gives up (InputError) after this many. Coefficients of N bits need about N/15 primes (the
+    // Gives up (ResourceLimit) after this many. Coefficients of N bits need about N/15 primes (the
     // atlas' coefficient explosion, 8407-digit lex coefficients, needed about 1 900).
     std::size_t max_primes = 10000;
     // Repeat the first prime's F4 on the others (f4_replay) instead of running it afresh.

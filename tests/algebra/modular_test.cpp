@@ -85,6 +85,18 @@ TEST(Modular, AutomaticAgreesWithBuchbergerOnTheBenchSuite) {
 }
 
 // Regressions from the review of the modular code.
+// Coefficients beyond max_primes' reach are a resource limit (exit 5), not an input error; the
+// fuzzer found (2e38)^3000 (115 000 digits), which needs about 12 300 primes.
+TEST(Modular, TooManyPrimesIsAResourceLimit) {
+    const IdealFile file = parse_ideal_file("vars: a,b\na^2*b-(2*10^38)^300\n");
+    ModularOptions options;
+    options.max_primes = 20;
+    EXPECT_THROW(modular_groebner(file.generators, options), ResourceLimit);
+    options.max_primes = 10000;
+    const GroebnerResult r = modular_groebner(file.generators, options);
+    EXPECT_EQ(r.basis, file.generators);
+}
+
 TEST(Modular, ReviewRegressions) {
     // A coefficient equal to the product of the two largest primes below 2^31: with a fixed
     // prime sequence both primes gave the unit ideal, agreed, and "1" passed certification.

@@ -85,6 +85,21 @@ TEST(Polynomial, EvaluateSubstituteAndContent) {
     }
 }
 
+// Powers are refused before the work when they could be too large or too slow, and computed
+// (against FLINT) just inside the limits.
+TEST(Polynomial, PowerLimitsRefuseBeforeExpanding) {
+    const RingPtr r = PolyRing::make({"s", "t"}, MonomialOrder::grevlex(2));
+    const Polynomial base = parse_polynomial("1+s^2+t^2", r);
+    EXPECT_THROW(base.pow(555), ResourceLimit);  // 39 060² term products (a fuzzer's timeout)
+    EXPECT_THROW(parse_polynomial("(s+t+1)^32767", r), ResourceLimit);  // 5e8 terms
+    const Polynomial inside = base.pow(60);  // s^2a·t^2b, a + b ≤ 60: C(62, 2) = 1891 terms
+    EXPECT_EQ(inside.num_terms(), 1891u);
+    FlintContext ctx(r);
+    FlintPolynomial flint_base = to_fmpq_mpoly(base, ctx), power(ctx);
+    fmpq_mpoly_pow_ui(power.get(), flint_base.get(), 60, ctx.get());
+    EXPECT_EQ(inside, from_fmpq_mpoly(power.get(), ctx));
+}
+
 TEST(Polynomial, MixedRingsThrow) {
     const RingPtr a = PolyRing::make({"x", "y"}, MonomialOrder::lex(2));
     const RingPtr b = PolyRing::make({"x", "y"}, MonomialOrder::grevlex(2));
