@@ -269,6 +269,10 @@ class InfixParser {
             throw ParseError(exponent_token.line, exponent_token.column,
                              "an exponent of at most " + std::to_string(limit),
                              "'" + digits + "' (the power overflows)");
+        } catch (const ResourceLimit& refused) {
+            // Still exit 5, but pointing at the power that was refused.
+            throw ResourceLimit("line " + std::to_string(op.line) + ", column " +
+                                std::to_string(op.column) + ": " + refused.what());
         }
     }
 

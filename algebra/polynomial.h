@@ -19,8 +19,8 @@
 
 namespace locus::algebra {
 
-// The most terms Polynomial::pow will build, and the most term products it will multiply out
-// (a few seconds: the coefficients of such powers have hundreds of bits).
+// The most terms Polynomial::pow will build, and the most work it will do, counted in products
+// of 64-bit limbs (a term product of two 640-bit coefficients counts 11): about a second here.
 inline constexpr double kMaxPowerTerms = 1e7;
 inline constexpr double kMaxPowerWork = 1e7;
 
@@ -73,8 +73,8 @@ class Polynomial {
     Polynomial times_term(const Rational& c, const std::uint64_t* m) const;
     // Throws ResourceLimit when the power could have more than kMaxPowerTerms terms (the
     // smaller of the multinomial count and the product of the degree ranges), or when its last
-    // multiplication could take more than kMaxPowerWork term products: (x+y+1)^32767 and
-    // (1+s^2+t^2)^555 are refused at once, not after gigabytes or minutes.
+    // multiplication could take more than kMaxPowerWork limb products: (x+y+1)^32767,
+    // (1+s^2+t^2)^555 and (1-t)^3015 are refused at once, not after gigabytes or seconds.
     Polynomial pow(unsigned exponent) const;
 
     Rational evaluate(std::span<const Rational> point) const;

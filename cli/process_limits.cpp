@@ -68,9 +68,9 @@ void gmp_free(void* p, std::size_t) {
     std::free(p);
 }
 
-// Files to remove when the watchdog ends the process.
+// Files being written (under a temporary name) and the name each will have when complete: the
+// watchdog removes them when it ends the process.
 std::mutex partial_mutex;
-// Files being written (under a temporary name) and the name each will have when complete.
 std::vector<std::pair<std::string, std::string>> partial_files;
 
 // More than a year is no limit (and keeps the arithmetic on time points finite).
@@ -87,9 +87,9 @@ std::optional<double> parse_timeout(const std::string& text) {
                                  text + "'");
     };
     char* end = nullptr;
-    errno = 0;
     const double value = std::strtod(text.c_str(), &end);
-    if (end == text.c_str() || *end != '\0' || std::isnan(value) || !(value > 0.0)) {
+    // !(value > 0) also refuses NaN.
+    if (end == text.c_str() || *end != '\0' || !(value > 0.0)) {
         return fail();
     }
     if (!(value < kNoLimitSeconds)) {

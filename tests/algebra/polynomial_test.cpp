@@ -92,6 +92,14 @@ TEST(Polynomial, PowerLimitsRefuseBeforeExpanding) {
     const Polynomial base = parse_polynomial("1+s^2+t^2", r);
     EXPECT_THROW(base.pow(555), ResourceLimit);  // 39 060² term products (a fuzzer's timeout)
     EXPECT_THROW(parse_polynomial("(s+t+1)^32767", r), ResourceLimit);  // 5e8 terms
+    // Few terms but wide coefficients: 1508² products of 1500-bit binomials (a fuzzer's timeout).
+    EXPECT_THROW(parse_polynomial("(1-t)^3015", r), ResourceLimit);
+    EXPECT_THROW(parse_polynomial("(1/3-t/7)^2000", r), ResourceLimit);
+    const Polynomial binomial = parse_polynomial("(1-t)^600", r);
+    EXPECT_EQ(binomial.num_terms(), 601u);
+    Integer middle;
+    fmpz_bin_uiui(middle.get(), 600, 300);
+    EXPECT_EQ(binomial.coefficient(300), Rational(middle));  // C(600, 300)·(−t)^300
     const Polynomial inside = base.pow(60);  // s^2a·t^2b, a + b ≤ 60: C(62, 2) = 1891 terms
     EXPECT_EQ(inside.num_terms(), 1891u);
     FlintContext ctx(r);

@@ -71,8 +71,11 @@ within 3 "(x+y+1)^32767 is refused before expansion (groebner)" 5 "could have mo
     bash -c "printf 'vars: x,y\n(x+y+1)^32767\n' | \"$locus\" groebner -"
 within 3 "(x+y+1)^32767 is refused before expansion (render)" 5 "could have more than 10000000 terms" -- \
     "$locus" render "(x+y+1)^32767" -o "$tmp/power.png"
-within 3 "(1+s^2+t^2)^555 (a fuzzer's timeout) is refused before expansion" 5 "would take more than 10000000 term products" -- \
+within 3 "(1+s^2+t^2)^555 (a fuzzer's timeout) is refused before expansion" 5 "would take more than 10000000 limb products" -- \
     bash -c "printf 'vars: s,t\n(1+s^2+t^2)^555\n' | \"$locus\" groebner -"
+printf 'params: t\nx = (1-t)^3015\ny = t\n' >"$tmp/wide.param"
+within 3 "(1-t)^3015 in a .param (a fuzzer's timeout: wide coefficients) is refused" 5 "limb products" -- \
+    "$locus" implicitize "$tmp/wide.param"
 within "$(deadline 2)" "resultant route on x = t^30000 stops at --timeout 2" 3 "timeout" -- \
     "$locus" implicitize --method resultant -p t "x = t^30000" "y = t^30001" --timeout 2
 within "$(deadline 1)" "render 8192x8192 stops at --timeout 1" 3 "nothing written to" -- \
