@@ -318,7 +318,7 @@ Polynomial Polynomial::pow(unsigned exponent) const {
         double widest_bits = 0.0;
         for (const Rational& c : coefficients_) {
             widest_bits = std::max(widest_bits, static_cast<double>(fmpz_bits(c.numerator()) +
-                                                                   fmpz_bits(c.denominator())));
+                                                                    fmpz_bits(c.denominator())));
         }
         const unsigned upper_half = exponent - exponent / 2;
         const double limbs_per_product =
