@@ -23,11 +23,13 @@ struct Setting {
 };
 
 constexpr Setting kSettings[] = {
-    {"none", {false, false, false}},
-    {"bounding_volumes", {true, false, false}},
-    {"triangle_inequality", {false, true, false}},
-    {"convexity", {false, false, true}},
-    {"all", {true, true, true}},
+    {"none", render::sdf::kNoSpeedUps},
+    {"bounding_volumes",
+     {.bounding_volumes = true, .triangle_inequality = false, .convexity = false}},
+    {"triangle_inequality",
+     {.bounding_volumes = false, .triangle_inequality = true, .convexity = false}},
+    {"convexity", {.bounding_volumes = false, .triangle_inequality = false, .convexity = true}},
+    {"all", {}},
 };
 
 struct Frame {

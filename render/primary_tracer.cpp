@@ -41,9 +41,9 @@ RootResult PrimaryTracer::first_hit(Row& row, double image_x, const Ray& ray,
     RootResult hit;
     switch (family_) {
     case Family::floating:
-        RayFamily::restriction(row.floating, image_x, row.restriction);
-        hit = tracer_->first_hit(ray, interval, &row.restriction, floating_->origin_t(),
-                                 row.previous_hit);
+        RayFamily::restriction(row.floating, image_x, row.restriction.polynomial);
+        row.restriction.origin = floating_->origin_t();
+        hit = tracer_->first_hit(ray, interval, row.restriction, row.previous_hit);
         break;
     case Family::certified:
         certified_->ball_at(row.certified, image_x, row.ball);

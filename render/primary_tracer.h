@@ -25,7 +25,7 @@ class PrimaryTracer {
     struct Row {
         RowExpansion floating;
         CertifiedRayFamily::Row certified;
-        RayPolynomial restriction;
+        RayRestriction restriction;
         BernsteinBall ball;
         double previous_hit = 0.0;
     };

@@ -34,11 +34,10 @@ SurfaceTracer::SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod m
       scale_(scale),
       tolerance_(tolerance) {}
 
-RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
-                                    const RayPolynomial* restriction, double restriction_origin,
-                                    double hint) const {
+std::optional<RootResult> SurfaceTracer::without_restriction(const Ray& ray,
+                                                             Interval& interval) const {
     if (interval.is_empty()) {
-        return {};
+        return RootResult{};
     }
     switch (method_) {
     case TraceMethod::certified:
@@ -69,20 +68,33 @@ RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
     if (method_ == TraceMethod::sphere_gradient) {
         return sphere_trace_gradient(*f_, ray, interval, 1e-7 * scale_);
     }
-    if (restriction != nullptr) {
-        return on_restriction(*restriction, restriction_origin, interval, ray, hint);
-    }
-    const double middle = 0.5 * (interval.lo + interval.hi);
-    const RayPolynomial computed = restrictor_.restrict_to(ray.at(middle), ray.direction);
-    return on_restriction(computed, middle, interval, ray, hint);
+    return std::nullopt;
 }
 
-RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, double origin,
-                                         Interval interval, const Ray& ray, double hint) const {
+RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval, double hint) const {
+    if (const std::optional<RootResult> answer = without_restriction(ray, interval)) {
+        return *answer;
+    }
+    const double middle = 0.5 * (interval.lo + interval.hi);
+    const RayRestriction computed{restrictor_.restrict_to(ray.at(middle), ray.direction), middle};
+    return on_restriction(computed, interval, ray, hint);
+}
+
+RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
+                                    const RayRestriction& restriction, double hint) const {
+    if (const std::optional<RootResult> answer = without_restriction(ray, interval)) {
+        return *answer;
+    }
+    return on_restriction(restriction, interval, ray, hint);
+}
+
+RootResult SurfaceTracer::on_restriction(const RayRestriction& restriction, Interval interval,
+                                         const Ray& ray, double hint) const {
+    const double origin = restriction.origin;
     const Interval shifted{interval.lo - origin, interval.hi - origin};
     RootResult found;
     if (method_ == TraceMethod::sphere_lipschitz) {
-        found = sphere_trace_lipschitz(restriction, shifted,
+        found = sphere_trace_lipschitz(restriction.polynomial, shifted,
                                        1e-9 * scale_ / glm::length(ray.direction));
         found.t = std::clamp(found.t + origin, interval.lo, interval.hi);
         return found;
@@ -91,10 +103,10 @@ RootResult SurfaceTracer::on_restriction(const RayPolynomial& restriction, doubl
     // backs their decisions, so they are compared against `certified` and `exact`, not trusted
     // (docs/stability.md). Only an undecided answer is passed on, to Bernstein subdivision on
     // the same coefficients.
-    found = first_root(finder_, restriction, shifted.lo, shifted.hi, hint - origin);
+    found = first_root(finder_, restriction.polynomial, shifted.lo, shifted.hi, hint - origin);
     if (found.status == RootStatus::unknown && method_ != TraceMethod::bernstein) {
         const int work = found.work;
-        found = BernsteinRootFinder{}.first_root(restriction, shifted.lo, shifted.hi);
+        found = BernsteinRootFinder{}.first_root(restriction.polynomial, shifted.lo, shifted.hi);
         found.work += work;
     }
     found.t = std::clamp(found.t + origin, interval.lo, interval.hi);

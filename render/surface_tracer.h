@@ -11,6 +11,9 @@
 // coefficients; the work of both is counted.
 #pragma once
 
+#include <limits>
+#include <optional>
+
 #include "algebra/compiled.h"
 #include "render/certified_tracer.h"
 #include "render/ray_restriction.h"
@@ -19,6 +22,12 @@
 #include "render/vec3.h"
 
 namespace locus::render {
+
+// f along a ray about one of its points: F(s) = f(ray.at(origin + s)) as a polynomial in s.
+struct RayRestriction {
+    RayPolynomial polynomial;
+    double origin = 0.0;
+};
 
 class SurfaceTracer {
   public:
@@ -31,15 +40,16 @@ class SurfaceTracer {
     TraceMethod method() const { return method_; }
     const algebra::CompiledPolynomial& polynomial() const { return *f_; }
 
-    // The smallest t in `interval` with f(ray.at(t)) = 0. `restriction`, when given, must be
-    // F(restriction_origin + s) = f(ray.at(restriction_origin + s)) as a polynomial in s;
-    // otherwise it is computed about the interval's midpoint, where the terms of f have the
-    // size of f near the surface rather than at the ray's origin.
+    // The smallest t in `interval` with f(ray.at(t)) = 0. The methods that need the
+    // restriction of f to the ray compute it about the interval's midpoint, where the terms of
+    // f have the size of f near the surface rather than at the ray's origin.
     // `hint`: a t near which the hit probably is (the neighbouring pixel's), or NaN; methods
     // that use one (SturmRootFinder) are faster with it, and the answer is the same.
     RootResult first_hit(const Ray& ray, Interval interval,
-                         const RayPolynomial* restriction = nullptr,
-                         double restriction_origin = 0.0,
+                         double hint = std::numeric_limits<double>::quiet_NaN()) const;
+    // The same with the restriction of f to this ray already known (a RayFamily's row); the
+    // methods that do not work on a restriction ignore it.
+    RootResult first_hit(const Ray& ray, Interval interval, const RayRestriction& restriction,
                          double hint = std::numeric_limits<double>::quiet_NaN()) const;
 
     // For the certified method: the ray's ball from a CertifiedRayFamily, the restriction to
@@ -50,8 +60,12 @@ class SurfaceTracer {
     }
 
   private:
-    RootResult on_restriction(const RayPolynomial& restriction, double origin, Interval interval,
-                              const Ray& ray, double hint) const;
+    // The answer of the methods that need no restriction (certified, exact, sphere_gradient),
+    // or nothing; moves a closed interval's lower end 0 to the next double, as the
+    // restriction methods expect.
+    std::optional<RootResult> without_restriction(const Ray& ray, Interval& interval) const;
+    RootResult on_restriction(const RayRestriction& restriction, Interval interval, const Ray& ray,
+                              double hint) const;
 
     const algebra::CompiledPolynomial* f_;
     LineRestrictor restrictor_;

@@ -90,7 +90,7 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
     // The root in [a, b] when G(a)·G(b) < 0 (Horner values), NaN when the basis that rounds
     // less sees no sign change.
     const auto refine = [&](double a, double b, double ga, double gb) {
-        return detail::refine_root(u, false, a, b, ga, gb, work);
+        return detail::refine_root(u, detail::RootOf::value, {a, b, ga, gb}, work);
     };
 
     // G on [a, b] (width h, values ga, gb) with at most one root: it by refinement when the ends
@@ -134,7 +134,8 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
             !touches_at(a) && !touches_at(b)) {
             return std::nullopt;
         }
-        if (const double precise = detail::refine_root(u, true, a, b, da, db, work);
+        if (const double precise =
+                detail::refine_root(u, detail::RootOf::derivative, {a, b, da, db}, work);
             !std::isnan(precise)) {
             tc = precise;
             c = std::clamp((tc - lo) / u.w, a, b);
@@ -212,7 +213,8 @@ RootResult BernsteinRootFinder::first_root(const RayPolynomial& f, double lo, do
                 const double db = detail::horner(dg.data(), n - 1, b);
                 const double tc =
                     da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)
-                        ? detail::refine_root(u, true, a, b, da, db, work, kCoarseCritical * width)
+                        ? detail::refine_root(u, detail::RootOf::derivative, {a, b, da, db}, work,
+                                              {.coarse_s = kCoarseCritical * width})
                         : NAN;
                 if (std::isnan(tc)) {
                     subdivide = true;  // rounding blurs the critical point; look closer

@@ -271,13 +271,15 @@ double even_root(const SturmSequence& seq, const detail::UnitRestriction& u, dou
         const double db = detail::horner(dg.data(), n - 1, b);
         if (attempts < kMaxTangentAttempts && da != 0.0 && db != 0.0 && (da < 0.0) != (db < 0.0)) {
             ++attempts;
-            const double t = detail::refine_root(u, true, a, b, da, db, work);
+            const double t =
+                detail::refine_root(u, detail::RootOf::derivative, {a, b, da, db}, work);
             if (!std::isnan(t)) {
                 const double c = std::clamp((t - u.lo) / u.w, a, b);
                 const double ga = detail::horner(g.data(), n, a);
                 const double gc = detail::horner(g.data(), n, c);
                 if (ga != 0.0 && gc != 0.0 && (ga < 0.0) != (gc < 0.0)) {
-                    const double root = detail::refine_root(u, false, a, c, ga, gc, work);
+                    const double root =
+                        detail::refine_root(u, detail::RootOf::value, {a, c, ga, gc}, work);
                     if (!std::isnan(root)) {
                         return root;
                     }
@@ -392,7 +394,8 @@ CountedRoot first_counted_root(const SturmSequence& seq, const detail::UnitRestr
             return CountedRoot{detail::from_unit(b, u.lo, u.hi)};
         }
         if ((ga < 0.0) != (gb < 0.0) && ga != 0.0) {
-            const double t = detail::refine_root(u, false, a, b, ga, gb, work, 0.0, true);
+            const double t = detail::refine_root(u, detail::RootOf::value, {a, b, ga, gb}, work,
+                                                 {.single_root = true});
             if (!std::isnan(t)) {
                 return CountedRoot{t};
             }
@@ -512,7 +515,8 @@ double coherent_root(const detail::UnitRestriction& u, double h, int& work) {
         return NAN;
     }
     ++work;
-    return detail::refine_root(u, false, l, r, gl, gr, work, 0.0, true);
+    return detail::refine_root(u, detail::RootOf::value, {l, r, gl, gr}, work,
+                               {.single_root = true});
 }
 
 }  // namespace

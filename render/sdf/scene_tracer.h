@@ -25,6 +25,9 @@ struct SpeedUps {
     bool triangle_inequality = true;
     bool convexity = true;
 };
+// The plain march, every speed-up off (the reference the speed-ups are measured against).
+inline constexpr SpeedUps kNoSpeedUps{
+    .bounding_volumes = false, .triangle_inequality = false, .convexity = false};
 
 struct TraceCounters {
     long evaluations = 0;  // primitive evaluations (a node counts its leaves)

@@ -160,7 +160,7 @@ TEST(SdfRender, SpeedUpsChangeTheWorkNotThePicture) {
     const Camera camera({{0, 6, 9}, {0, 0, 0}, {0, 1, 0}, 40.0}, 64, 48);
     const double footprint = glm::length(camera.per_row()) / glm::length(camera.direction(32, 24));
     const SceneTracer fast(objects, 7.0);
-    const SceneTracer plain(objects, 7.0, {false, false, false});
+    const SceneTracer plain(objects, 7.0, kNoSpeedUps);
     long fast_work = 0, plain_work = 0;
     int differing = 0;
     for (int y = 0; y < 48; ++y) {
@@ -197,7 +197,7 @@ round = 0.3
     const Camera camera({{0.0, 0.3, 5.0}, {0, 0, 0}, {0, 1, 0}, 40.0}, 48, 32);
     const double footprint = glm::length(camera.per_row()) / glm::length(camera.direction(24, 16));
     const SceneTracer with(items, 1.0);
-    const SceneTracer without(items, 1.0, {false, true, true});
+    const SceneTracer without(items, 1.0, {.bounding_volumes = false});
     int differing = 0;
     for (int y = 0; y < 32; ++y) {
         for (int x = 0; x < 48; ++x) {

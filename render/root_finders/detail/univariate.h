@@ -423,7 +423,10 @@ inline double halley_bracketed(const double* g, int degree, double a, double b, 
     return regula_falsi(g, degree, a, b, ga, gb, tol, work);
 }
 
-// F and G, or F' and G' when `of_derivative`, ready to evaluate.
+// Which polynomial a bracket holds a root of: the restriction or its derivative.
+enum class RootOf { value, derivative };
+
+// F and G, or F' and G' for RootOf::derivative, ready to evaluate.
 struct BothBases {
     const double* f;  // in t
     int f_degree;
@@ -434,13 +437,13 @@ struct BothBases {
     Coefficients g_storage;
 };
 
-inline void make_bases(const UnitRestriction& u, bool of_derivative, BothBases& b) {
+inline void make_bases(const UnitRestriction& u, RootOf of, BothBases& b) {
     b.f = u.f;
     b.f_degree = u.f_degree;
     b.g = u.g.data();
     b.g_degree = u.degree;
     b.scale = u.kappa;
-    if (of_derivative) {
+    if (of == RootOf::derivative) {
         derivative(u.f, u.f_degree, b.f_storage.data());
         derivative(u.g.data(), u.degree, b.g_storage.data());
         b.f = b.f_storage.data();
@@ -462,18 +465,28 @@ inline bool original_rounds_less(const BothBases& b, const UnitRestriction& u, d
     return f_scale * b.scale < g_scale;
 }
 
-// The root, as t, of G (or of G' when `of_derivative`) bracketed by [a, b] ⊂ [0, 1] with
-// values ga, gb of opposite signs, refined by regula falsi in the basis that rounds less, to
-// the root tolerance or, when `coarse_s` > 0, only to a bracket of that width in s. NaN when
-// that basis sees no sign change at the ends: the one in G was rounding noise. `single_root`:
-// the bracket is known to hold one root (Sturm isolation), so halley_bracketed refines it.
-inline double refine_root(const UnitRestriction& u, bool of_derivative, double a, double b,
-                          double ga, double gb, int& work, double coarse_s = 0.0,
-                          bool single_root = false) {
-    const auto solve = single_root ? halley_bracketed : regula_falsi;
+// A bracket [a, b] ⊂ [0, 1] in s with the values ga, gb of G (or G') at its ends, of opposite
+// signs.
+struct SignChange {
+    double a, b, ga, gb;
+};
+
+// How far and by which iteration refine_root goes.
+struct Refinement {
+    double coarse_s = 0.0;     // > 0: stop at a bracket this wide in s, not at the tolerance
+    bool single_root = false;  // the bracket holds one root (Sturm isolation): halley_bracketed
+};
+
+// The root, as t, of G (or of G') in `bracket`, refined by regula falsi in the basis that
+// rounds less, to the root tolerance or to `how.coarse_s`. NaN when that basis sees no sign
+// change at the ends: the one in G was rounding noise.
+inline double refine_root(const UnitRestriction& u, RootOf of, const SignChange& bracket, int& work,
+                          Refinement how = {}) {
+    const auto [a, b, ga, gb] = bracket;
+    const auto solve = how.single_root ? halley_bracketed : regula_falsi;
     BothBases bases;
-    make_bases(u, of_derivative, bases);
-    const double tol_s = std::max(unit_tolerance(u.w), coarse_s);
+    make_bases(u, of, bases);
+    const double tol_s = std::max(unit_tolerance(u.w), how.coarse_s);
     // With lo = 0 the two bases differ only by the scaling of the coefficients.
     if (u.lo != 0.0 && original_rounds_less(bases, u, 0.5 * (a + b))) {
         const double ta = from_unit(a, u.lo, u.hi);
@@ -575,7 +588,7 @@ inline double newton_polish(const double* c, int degree, double x, int max_steps
 // outside [lo, hi].
 inline double critical_point_near(const UnitRestriction& u, double s, int& work) {
     BothBases bases;
-    make_bases(u, true, bases);
+    make_bases(u, RootOf::derivative, bases);
     if (original_rounds_less(bases, u, s)) {
         return newton_polish(bases.f, bases.f_degree, u.lo + u.w * s, kPolishSteps, work);
     }
