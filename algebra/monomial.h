@@ -74,6 +74,15 @@ class MonomialLayout {
         }
         return true;
     }
+    // The invariant of every stored monomial (LOCUS_ASSERT checks it where terms are stored).
+    bool guards_clear(const std::uint64_t* a) const {
+        for (std::size_t w = 0; w < words_; ++w) {
+            if ((a[w] & guard_mask_) != 0) {
+                return false;
+            }
+        }
+        return true;
+    }
     bool is_one(const std::uint64_t* a) const {
         for (std::size_t w = 0; w < words_; ++w) {
             if (a[w] != 0) {
@@ -147,5 +156,22 @@ class MonomialLayout {
     // instructions a call on eco-7 (3 % of Buchberger's instructions there).
     std::vector<std::array<std::uint64_t, 16>> mask_table_;
 };
+
+// The shape of a reduced (or minimal) basis: the leading monomials lead(0), …, lead(n − 1) are
+// strictly ascending and none divides another. For LOCUS_ASSERT: quadratic in n.
+template <class LeadingMonomial>
+bool ascending_and_minimal(std::size_t n, LeadingMonomial lead, const MonomialLayout& layout) {
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i + 1 < n && layout.compare(lead(i), lead(i + 1)) >= 0) {
+            return false;
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+            if (i != j && layout.divides(lead(i), lead(j))) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
 
 }  // namespace locus::algebra

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "algebra/assert.h"
 #include "algebra/error.h"
 
 namespace locus::algebra {
@@ -112,6 +113,10 @@ long Polynomial::degree(std::size_t var) const {
 }
 
 void Polynomial::push_back_term(Rational c, const std::uint64_t* m) {
+    // Canonical form: non-zero coefficients, monomials strictly decreasing, guard bits clear.
+    LOCUS_ASSERT(!c.is_zero());
+    LOCUS_ASSERT(ring_->layout().guards_clear(m));
+    LOCUS_ASSERT(is_zero() || ring_->layout().compare(monomial(num_terms() - 1), m) > 0);
     monomials_.insert(monomials_.end(), m, m + ring_->words());
     coefficients_.push_back(std::move(c));
 }

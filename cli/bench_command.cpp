@@ -363,7 +363,7 @@ int run_bench(const BenchArgs& args) {
 
 }  // namespace
 
-void add_bench_command(CLI::App& app, int& exit_code) {
+void add_bench_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd =
         app.add_subcommand("bench", "Benchmark suites (groebner, implicit, render, sdf)");
@@ -388,7 +388,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--surf", args->surf,
                     "render suite: surf executable for the same-run reference, or 'off'");
     add_process_limit_options(cmd, args->limits);
-    cmd->callback([args, &exit_code] { exit_code = run_bench(*args); });
+    cmd->callback([args, &context] { context.exit_code = run_bench(*args); });
 }
 
 }  // namespace locus::cli

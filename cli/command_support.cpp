@@ -4,7 +4,7 @@
 #include <signal.h>      // for kill
 #include <sys/select.h>  // for select
 #include <sys/wait.h>    // for waitpid
-#include <unistd.h>      // for isatty, fork, pipe
+#include <unistd.h>      // for fork, pipe
 
 #include <cerrno>
 #include <chrono>
@@ -149,50 +149,6 @@ std::optional<std::chrono::steady_clock::time_point> deadline_after(double secon
     return std::chrono::steady_clock::now() +
            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                std::chrono::duration<double>(seconds));
-}
-
-namespace {
-bool progress_shown = false;
-}
-
-std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const std::string& label) {
-    if (!isatty(STDERR_FILENO)) {
-        return {};
-    }
-    auto last = std::make_shared<std::chrono::steady_clock::time_point>();
-    return [label, last](const algebra::GroebnerProgress& p) {
-        const auto now = std::chrono::steady_clock::now();
-        if (now - *last < std::chrono::milliseconds(100)) {
-            return;
-        }
-        *last = now;
-        std::fprintf(stderr, "\r%s: %zu pairs done, %zu left, basis %zu, sugar %u   ",
-                     label.c_str(), p.pairs_done, p.pairs_left, p.basis_size, p.current_sugar);
-        std::fflush(stderr);
-        progress_shown = true;
-    };
-}
-
-std::function<void(double)> terminal_fraction_progress(const std::string& label) {
-    if (!isatty(STDERR_FILENO)) {
-        return {};
-    }
-    return [label](double fraction) {
-        const int width = 40;
-        const int filled = static_cast<int>(fraction * width);
-        std::fprintf(stderr, "\r%s [%s%s] %3d%%", label.c_str(), std::string(filled, '#').c_str(),
-                     std::string(width - filled, ' ').c_str(), static_cast<int>(100.0 * fraction));
-        std::fflush(stderr);
-        progress_shown = true;
-    };
-}
-
-void finish_progress() {
-    if (progress_shown) {
-        std::fprintf(stderr, "\r\033[K");
-        std::fflush(stderr);
-        progress_shown = false;
-    }
 }
 
 bool on_path(const std::string& program) {

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "algebra/error.h"
-#include "algebra/groebner/buchberger.h"
 #include "algebra/parse.h"
 
 namespace locus::cli {
@@ -58,14 +57,6 @@ struct ChildOutcome {
     double seconds = 0.0;
 };
 ChildOutcome run_in_child(double limit_seconds, const std::function<std::string()>& work);
-
-// A progress callback that redraws one line on standard error when it is a terminal (and does
-// nothing otherwise), at most ten times a second; finish_progress() clears the line.
-std::function<void(const algebra::GroebnerProgress&)> terminal_progress(const std::string& label);
-// The same for work measured as a finished fraction: "label [####    ]  50%". Each call draws
-// (the caller throttles); finish_progress() clears this line too.
-std::function<void(double)> terminal_fraction_progress(const std::string& label);
-void finish_progress();
 
 // Is `program` an existing path, or an executable name found in a directory of PATH?
 bool on_path(const std::string& program);

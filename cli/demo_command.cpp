@@ -151,21 +151,21 @@ int run_demo(const std::string& output) {
 
 }  // namespace
 
-void add_demo_command(CLI::App& app, int& exit_code) {
+void add_demo_command(CLI::App& app, CommandContext& context) {
     auto output = std::make_shared<std::string>("locus-demo.png");
     auto limits = std::make_shared<ProcessLimitArgs>();
     CLI::App* cmd = app.add_subcommand(
         "demo", "Implicitize Steiner's Roman surface and render it standing in an SDF scene");
     cmd->add_option("-o,--output", *output, "image file (default locus-demo.png)");
     add_process_limit_options(cmd, *limits);
-    cmd->callback([output, limits, &exit_code] {
+    cmd->callback([output, limits, &context] {
         apply_process_limits(*limits);
         try {
             render::check_image_path(*output);
         } catch (const Error& e) {
             throw failure_about("", e);
         }
-        exit_code = run_demo(*output);
+        context.exit_code = run_demo(*output);
     });
 }
 

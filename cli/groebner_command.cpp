@@ -83,7 +83,7 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
                  s.reductions, s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
 }
 
-int run_groebner(const GroebnerArgs& args) {
+int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = [&] {
         try {
@@ -155,19 +155,19 @@ int run_groebner(const GroebnerArgs& args) {
             modular_options.threads = options.threads;
             result = algebra::modular_groebner(ideal.generators, modular_options, &modular_stats);
         } else if (args.algorithm == "auto") {
-            options.progress = terminal_progress("groebner");
+            options.progress = progress.groebner("groebner");
             result =
                 algebra::groebner_automatic(ideal.generators, options, &modular_stats, &modular);
-            finish_progress();
+            progress.clear();
         } else {
-            options.progress = terminal_progress("groebner");
+            options.progress = progress.groebner("groebner");
             result = args.algorithm == "signature"
                          ? algebra::signature_groebner(ideal.generators, options)
                          : algebra::groebner(ideal.generators, options);
-            finish_progress();
+            progress.clear();
         }
     } catch (const Timeout&) {
-        finish_progress();
+        progress.clear();
         throw CommandFailure(exit_timeout, "timeout: the modular algorithm stopped after " +
                                                timeout_text(args.limits));
     }
@@ -212,7 +212,7 @@ int run_groebner(const GroebnerArgs& args) {
 
 }  // namespace
 
-void add_groebner_command(CLI::App& app, int& exit_code) {
+void add_groebner_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<GroebnerArgs>();
     CLI::App* cmd = app.add_subcommand(
         "groebner", "Reduced Gröbner basis of an ideal file, one polynomial a line");
@@ -238,7 +238,7 @@ void add_groebner_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--threads", args->threads,
                     "threads for the certification of the modular route (0: all cores, the "
                     "default; the benchmarks use 1)");
-    cmd->callback([args, &exit_code] { exit_code = run_groebner(*args); });
+    cmd->callback([args, &context] { context.exit_code = run_groebner(*args, context.progress); });
 }
 
 }  // namespace locus::cli

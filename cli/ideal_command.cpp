@@ -52,13 +52,14 @@ algebra::Polynomial polynomial_argument(const std::string& text, const algebra::
     }
 }
 
-int answer(bool yes) {
-    finish_progress();
+int answer(bool yes, ProgressLine& progress) {
+    progress.clear();
     std::cout << (yes ? "yes" : "no") << "\n";
     return yes ? exit_ok : exit_no;
 }
 
-int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options) {
+int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options,
+                  ProgressLine& progress) {
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
     const bool second_is_file = args.operation != "member" && args.operation != "radical-member" &&
                                 args.operation != "eliminate" && args.operation != "dimension";
@@ -74,7 +75,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
         throw CommandFailure(exit_input, args.first + ": the ideal has no generators");
     }
     auto print_basis = [&](const std::vector<algebra::Polynomial>& basis) {
-        finish_progress();
+        progress.clear();
         std::cout << algebra::format_polynomials(basis, *ring, format);
         return exit_ok;
     };
@@ -92,7 +93,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     if (op == "member") {
         const auto cert =
             algebra::ideal_membership(polynomial_argument(args.second, ring), gens, options);
-        finish_progress();
+        progress.clear();
         if (!cert.is_member) {
             std::cout << "no\nremainder: " << algebra::to_string(cert.remainder) << "\n";
             return exit_no;
@@ -106,7 +107,8 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     }
     if (op == "radical-member") {
         return answer(
-            algebra::radical_membership(polynomial_argument(args.second, ring), gens, options));
+            algebra::radical_membership(polynomial_argument(args.second, ring), gens, options),
+            progress);
     }
     if (op == "eliminate") {
         std::vector<std::size_t> vars;
@@ -128,7 +130,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     }
     if (op == "dimension") {
         const auto report = algebra::zero_dimension_test(gens, options);
-        finish_progress();
+        progress.clear();
         switch (report.kind) {
         case algebra::Dimension::unit_ideal:
             std::cout << "unit ideal (no solutions)\n";
@@ -160,20 +162,20 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
         return print_basis(algebra::saturation(gens, second, options));
     }
     if (op == "contains") {
-        return answer(algebra::ideal_contains(gens, second, options));
+        return answer(algebra::ideal_contains(gens, second, options), progress);
     }
     if (op == "equal") {
-        return answer(algebra::ideal_equal(gens, second, options));
+        return answer(algebra::ideal_equal(gens, second, options), progress);
     }
     throw CommandFailure(exit_input, "ideal: unknown operation '" + op + "'");
 }
 
-int run_ideal(const IdealArgs& args) {
+int run_ideal(const IdealArgs& args, ProgressLine& progress) {
     algebra::GroebnerOptions options;
     options.deadline = apply_process_limits(args.limits);
-    options.progress = terminal_progress("ideal " + args.operation);
+    options.progress = progress.groebner("ideal " + args.operation);
     try {
-        return run_operation(args, options);
+        return run_operation(args, options, progress);
     } catch (const Timeout& e) {
         throw CommandFailure(
             exit_timeout, std::string(e.what()) + " (--timeout " + timeout_text(args.limits) + ")");
@@ -182,7 +184,7 @@ int run_ideal(const IdealArgs& args) {
 
 }  // namespace
 
-void add_ideal_command(CLI::App& app, int& exit_code) {
+void add_ideal_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<IdealArgs>();
     CLI::App* cmd = app.add_subcommand("ideal", "Ideal operations on ideal files");
     cmd->footer(
@@ -205,7 +207,7 @@ void add_ideal_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--order", args->order, "override the first file's order");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
     add_process_limit_options(cmd, args->limits);
-    cmd->callback([args, &exit_code] { exit_code = run_ideal(*args); });
+    cmd->callback([args, &context] { context.exit_code = run_ideal(*args, context.progress); });
 }
 
 }  // namespace locus::cli

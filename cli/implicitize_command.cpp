@@ -25,7 +25,7 @@ struct ImplicitizeArgs {
     ProcessLimitArgs limits;
 };
 
-int run_implicitize(const ImplicitizeArgs& args) {
+int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
     const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
     if (args.method != "auto" && args.method != "groebner" && args.method != "resultant" &&
@@ -57,7 +57,7 @@ int run_implicitize(const ImplicitizeArgs& args) {
     }
     algebra::GroebnerOptions options;
     options.deadline = deadline;
-    options.progress = terminal_progress("implicitize");
+    options.progress = progress.groebner("implicitize");
     std::optional<implicit::ImplicitResult> found;
     if (args.method == "auto") {
         std::string fallback_reason;
@@ -72,7 +72,7 @@ int run_implicitize(const ImplicitizeArgs& args) {
     }
     const implicit::ImplicitResult r =
         found ? std::move(*found) : implicit::implicitize(map, options);
-    finish_progress();
+    progress.clear();
     std::fprintf(stderr, "method: %s\n",
                  r.method == "resultant"     ? "resultant (iterated Sylvester, factor kept by "
                                                "substitution)"
@@ -124,7 +124,7 @@ int run_implicitize(const ImplicitizeArgs& args) {
 
 }  // namespace
 
-void add_implicitize_command(CLI::App& app, int& exit_code) {
+void add_implicitize_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<ImplicitizeArgs>();
     CLI::App* cmd = app.add_subcommand(
         "implicitize", "Implicit equation of a parametrization, verified by substitution");
@@ -138,7 +138,8 @@ void add_implicitize_command(CLI::App& app, int& exit_code) {
                     "curves and surfaces) | groebner | resultant | interpolate");
     cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
     add_process_limit_options(cmd, args->limits);
-    cmd->callback([args, &exit_code] { exit_code = run_implicitize(*args); });
+    cmd->callback(
+        [args, &context] { context.exit_code = run_implicitize(*args, context.progress); });
 }
 
 }  // namespace locus::cli

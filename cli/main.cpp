@@ -44,16 +44,16 @@ int main(int argc, char** argv) {
     CLI::App app("locus: exact implicit equations and Gröbner bases over Q", "locus");
     app.footer(kExitCodes);
     app.require_subcommand(1);
-    int exit_code = exit_ok;
-    add_groebner_command(app, exit_code);
-    add_ideal_command(app, exit_code);
-    add_implicitize_command(app, exit_code);
-    add_bench_command(app, exit_code);
-    add_demo_command(app, exit_code);
-    add_render_command(app, exit_code);
-    add_trace_command(app, exit_code);
-    const auto fail = [](int code, const char* message) {
-        finish_progress();
+    CommandContext context;
+    add_groebner_command(app, context);
+    add_ideal_command(app, context);
+    add_implicitize_command(app, context);
+    add_bench_command(app, context);
+    add_demo_command(app, context);
+    add_render_command(app, context);
+    add_trace_command(app, context);
+    const auto fail = [&context](int code, const char* message) {
+        context.progress.clear();
         std::fprintf(stderr, "locus: %s\n", message);
         return finish_output(code);
     };
@@ -78,5 +78,5 @@ int main(int argc, char** argv) {
             std::string("internal error (a bug; please report it): ") + e.what();
         return fail(exit_internal, message.c_str());
     }
-    return finish_output(exit_code);
+    return finish_output(context.exit_code);
 }

@@ -171,11 +171,11 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
     return scene;
 }
 
-int run_render(const RenderArgs& args) {
+int run_render(const RenderArgs& args, ProgressLine& progress) {
     // The limit covers implicitizing `param` surfaces as well as rendering.
     const Deadline deadline = apply_process_limits(args.limits);
     render::ExecutionSettings execution;
-    execution.progress = terminal_fraction_progress("render");
+    execution.progress = progress.fraction("render");
     execution.deadline = deadline;
     render::Scene scene;
     std::vector<render::Aov> aovs;
@@ -216,7 +216,7 @@ int run_render(const RenderArgs& args) {
                                                timeout_text(args.limits) +
                                                "); nothing written to '" + args.output + "'");
     }
-    finish_progress();
+    progress.clear();
     const std::vector<std::string> written = render::write_image(image, args.output, aovs);
     unregister_partial_file(partial);
     if (stats.hits == 0) {
@@ -242,7 +242,7 @@ int run_render(const RenderArgs& args) {
 
 }  // namespace
 
-void add_render_command(CLI::App& app, int& exit_code) {
+void add_render_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Ray-trace algebraic surfaces f(x,y,z) = 0");
     cmd->add_option("input", args->input,
@@ -270,7 +270,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
     add_process_limit_options(cmd, args->limits);
     cmd->add_option("--aov", args->aovs, "also write depth | normal | work as <stem>.<aov>.exr")
         ->delimiter(',');
-    cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
+    cmd->callback([args, &context] { context.exit_code = run_render(*args, context.progress); });
 }
 
 }  // namespace locus::cli

@@ -66,7 +66,7 @@ int run_trace(const TraceArgs& args) {
 
 }  // namespace
 
-void add_trace_command(CLI::App& app, int& exit_code) {
+void add_trace_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<TraceArgs>();
     CLI::App* cmd = app.add_subcommand(
         "trace",
@@ -82,7 +82,7 @@ void add_trace_command(CLI::App& app, int& exit_code) {
                     "sphere-lipschitz | exact");
     cmd->add_option("--t-max", args->t_max, "search t in (0, T] (default 100)");
     add_process_limit_options(cmd, args->limits);
-    cmd->callback([args, &exit_code] { exit_code = run_trace(*args); });
+    cmd->callback([args, &context] { context.exit_code = run_trace(*args); });
 }
 
 }  // namespace locus::cli

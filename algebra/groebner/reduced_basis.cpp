@@ -3,6 +3,7 @@
 // enough: leading monomials never change, and tail irreducibility depends on them only.
 #include <algorithm>
 
+#include "algebra/assert.h"
 #include "algebra/groebner/buchberger.h"
 #include "algebra/groebner/reduction.h"
 
@@ -47,6 +48,8 @@ std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
               [&](const IntegerPolynomial& a, const IntegerPolynomial& b) {
                   return layout.compare(a.monomial(0, w), b.monomial(0, w)) < 0;
               });
+    LOCUS_ASSERT(ascending_and_minimal(
+        reduced.size(), [&](std::size_t i) { return reduced[i].monomial(0, w); }, layout));
     return reduced;
 }
 

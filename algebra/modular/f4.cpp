@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "algebra/assert.h"
 #include "algebra/error.h"
 #include "algebra/monomial_table.h"
 
@@ -721,6 +722,8 @@ class F4Engine {
                   [&](const ModularPolynomial& a, const ModularPolynomial& b) {
                       return layout_.compare(a.monomials.data(), b.monomials.data()) < 0;
                   });
+        LOCUS_ASSERT(ascending_and_minimal(
+            out.size(), [&](std::size_t i) { return out[i].monomials.data(); }, layout_));
         return out;
     }
 
