@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
     add_render_command(app, exit_code);
     add_trace_command(app, exit_code);
     const auto fail = [](int code, const char* message) {
+        stop_watchdog();
         finish_progress();
         std::fprintf(stderr, "locus: %s\n", message);
         return finish_output(code);
@@ -78,5 +79,7 @@ int main(int argc, char** argv) {
             std::string("internal error (a bug; please report it): ") + e.what();
         return fail(exit_internal, message.c_str());
     }
-    return finish_output(exit_code);
+    const int code = finish_output(exit_code);
+    stop_watchdog();
+    return code;
 }
