@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
     add_render_command(app, context);
     add_trace_command(app, context);
     const auto fail = [&context](int code, const char* message) {
+        stop_watchdog();
         context.progress.clear();
         std::fprintf(stderr, "locus: %s\n", message);
         return finish_output(code);
@@ -78,5 +79,7 @@ int main(int argc, char** argv) {
             std::string("internal error (a bug; please report it): ") + e.what();
         return fail(exit_internal, message.c_str());
     }
-    return finish_output(context.exit_code);
+    const int code = finish_output(context.exit_code);
+    stop_watchdog();
+    return code;
 }

@@ -71,6 +71,13 @@ void gmp_free(void* p, std::size_t) {
 // Files being written (under a temporary name) and the name each will have when complete: the
 // watchdog removes them when it ends the process.
 std::mutex partial_mutex;
+
+// Held by the watchdog from the moment it fires until the process ends, and by
+// stop_watchdog(): whichever takes it first decides the outcome, so a command that stopped at
+// its deadline by itself prints its message alone, and a finished command is not ended
+// afterwards.
+std::mutex watchdog_mutex;
+bool watchdog_stopped = false;
 std::vector<std::pair<std::string, std::string>> partial_files;
 
 // More than a year is no limit (and keeps the arithmetic on time points finite).
@@ -177,6 +184,10 @@ Deadline apply_process_limits(const ProcessLimitArgs& args) {
     const std::string text = seconds_text(*seconds);
     std::thread([kill_at, text] {
         std::this_thread::sleep_until(kill_at);
+        const std::unique_lock<std::mutex> deciding(watchdog_mutex);
+        if (watchdog_stopped) {
+            return;
+        }
         std::string not_written;
         {
             const std::unique_lock<std::mutex> lock(partial_mutex, std::try_to_lock);
@@ -208,6 +219,11 @@ void install_out_of_memory_handlers() {
     std::set_new_handler([] { out_of_memory(); });
     mp_set_memory_functions(&checked_malloc, &gmp_realloc, &gmp_free);
     __flint_set_memory_functions(&checked_malloc, &checked_calloc, &checked_realloc, &std::free);
+}
+
+void stop_watchdog() {
+    const std::lock_guard<std::mutex> lock(watchdog_mutex);
+    watchdog_stopped = true;
 }
 
 void register_partial_file(const std::string& partial, const std::string& final_name) {

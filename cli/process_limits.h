@@ -36,6 +36,11 @@ using Deadline = std::optional<std::chrono::steady_clock::time_point>;
 // are input errors.
 Deadline apply_process_limits(const ProcessLimitArgs& args);
 
+// Called by main() once the outcome is decided (the result written, or the error about to be
+// printed): the watchdog then no longer ends the process. If it has already fired, this waits
+// for it, and the process ends with its message and exit code 3.
+void stop_watchdog();
+
 // The --timeout value as messages quote it ("0.5 s"), or "" when there is none.
 std::string timeout_text(const ProcessLimitArgs& args);
 

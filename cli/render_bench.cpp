@@ -8,9 +8,10 @@
 // differs by more than 1e-6 × the clip radius. When surf (Debian's surf-alggeo) is installed,
 // it draws the same surface at the same size in the same run (its own camera and clipping,
 // start-up excluded) for a speed reference, set beside `render s`: the whole picture as
-// `locus render` makes it (sturm, shading without shadows, one sample, all cores). Both are the
-// median of repeated runs, which shrugs off runs slowed by other work on a shared machine, and
-// the two programs take turns (time_side_by_side) so that both see the same spells of load.
+// `locus render` makes it (its default method, shading without shadows, one sample, all
+// cores). Both are the median of repeated runs, which shrugs off runs slowed by other work on a
+// shared machine, and the two programs take turns (time_side_by_side) so that both see the same
+// spells of load.
 #include "cli/render_bench.h"
 
 #include <unistd.h>
@@ -176,7 +177,7 @@ std::string ratio_text(double locus, double surf) {
 }
 
 // A method with one of its settings: the sphere-tracing methods are also run with their
-// tolerance 100× looser and 100× tighter than the default (issue 6: steps against tolerance).
+// tolerance 100× looser and 100× tighter than the default.
 struct Setting {
     render::TraceMethod method;
     std::string name;  // "default" or "tol=1e-05"

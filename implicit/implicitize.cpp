@@ -225,6 +225,10 @@ std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t n
     return "";
 }
 
+// Why this order: every classic case but one finishes elimination in under 5 ms (Enneper in
+// 1.2 ms, where interpolation needs 25 ms of primes), and interpolation answers where
+// elimination does not (the cubic Bézier triangle in 0.14 s, where resultants take 2.5 s and
+// elimination over 30 s).
 ImplicitResult implicitize_auto(const Parametrization& map, const algebra::GroebnerOptions& options,
                                 std::string* fallback_reason) {
     const std::size_t num_params = map.parameter_ring->num_vars();

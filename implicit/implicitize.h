@@ -71,12 +71,10 @@ ImplicitResult implicitize_by_interpolation(
     std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 // The route `--method auto` takes: for plane curves and surfaces, Gröbner elimination for at
-// most 20 ms (every classic case but one finishes in under 5 ms; Enneper in 1.2 ms where
-// interpolation needs 25 ms of primes), then interpolation modulo primes (the cubic Bézier
-// triangle in 0.14 s, where resultants take 2.5 s and elimination over 30 s), then, if it gives
-// up (the image is not a hypersurface, too many monomials), resultants, then Gröbner elimination
-// under options.deadline; space curves and other shapes go to elimination directly. When a
-// route gave up, `fallback_reason` (if given) receives why.
+// most 20 ms, then interpolation modulo primes, then, if it gives up (the image is not a
+// hypersurface, too many monomials), resultants, then Gröbner elimination under
+// options.deadline; space curves and other shapes go to elimination directly. When a route
+// gave up, `fallback_reason` (if given) receives why.
 ImplicitResult implicitize_auto(const Parametrization& map,
                                 const algebra::GroebnerOptions& options = {},
                                 std::string* fallback_reason = nullptr);

@@ -51,7 +51,7 @@ struct ResolvedSelection {
     bool true_degree_sugar = false;  // a new element's sugar is its own degree
 };
 
-// What `automatic` means, per order kind, from measurements (docs/performance.md); degrees are
+// What `automatic` means, per order kind, from measurements (docs/history.md); degrees are
 // always taken in the order's first weight row (MonomialLayout::leading_weight), which is the
 // total degree for grevlex and grlex:
 //  - degree orders (first row all positive): sugar, and a new element's sugar is its own

@@ -502,6 +502,11 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                         "signature or buchberger)");
 }
 
+// Why these probe lengths: under degree orders the signature algorithm beats the modular one up
+// to katsura-8 (48–50 ms against 91 ms; every suite case) and loses from katsura-9 on (0.58 s
+// against 0.48 s; cyclic-7 3.5 s against 0.63 s), where the probe adds a sixth at most. Under
+// lex, bases of zero-dimensional ideals are where FGLM wins (katsura5_lex 2.7 ms against
+// 17 ms), hence the short probe there.
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options, ModularStats* stats,
                                   bool* used_modular) {

@@ -65,13 +65,8 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
 // `--algorithm auto`: the signature-based algorithm (signature_groebner.h) first, for at most
 // 100 ms under degree orders and 1 ms under the others; if it has not finished, the certified
 // multi-modular algorithm. `options.deadline` bounds the whole; `used_modular` tells which
-// answered. Under degree orders the signature algorithm beats the modular one up to katsura-8
-// (48–50 ms against 91 ms; every suite case), and loses from katsura-9 on (0.58 s against
-// 0.48 s; cyclic-7 3.5 s against 0.63 s), where the probe adds a sixth at most. The signature
-// algorithm falls back to Buchberger where its signatures overflow
-// (signature_groebner_or_buchberger). Under lex, bases of
-// zero-dimensional ideals are where FGLM wins (katsura5_lex 2.7 ms against 17 ms), hence the
-// short probe there. Before the signature algorithm the probe was Buchberger for 8 and 1 ms.
+// answered. The signature algorithm falls back to Buchberger where its signatures overflow
+// (signature_groebner_or_buchberger).
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options = {},
                                   ModularStats* stats = nullptr, bool* used_modular = nullptr);

@@ -1,4 +1,4 @@
-// The certification's arithmetic (issue 7): the residue lanes against scalar modular arithmetic
+// The certification's arithmetic: the residue lanes against scalar modular arithmetic
 // done another way (64-bit products and remainders, a modular inverse of 2^32 in place of
 // Montgomery's reduction);
 // the size bounds against exact powers; the residue system's reconstructions and remainders

@@ -1,4 +1,4 @@
-// Multi-modular F4 (issue 7): every literature basis and every Singular oracle basis recomputed
+// Multi-modular F4: every literature basis and every Singular oracle basis recomputed
 // by modular_groebner equals the Buchberger result; an unlucky prime forced by construction is
 // detected and set aside; the certification rejects a corrupted basis; F4 modulo one prime
 // agrees with the rational basis reduced modulo that prime; a replay of the first prime's F4

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hostile input, faults and limits (issue 20): every case ends with a one-line error and the exit
+# Hostile input, faults and limits: every case ends with a one-line error and the exit
 # code of the table in `locus --help` (0 ok, 1 a "no", 2 bad input, 3 timeout, 4 verification
 # failed, 5 resource limit, 70 a bug), never a crash, a hang or a truncated file.
 # Usage: tests/cli/hostile_input_test.sh PATH/TO/locus [sanitized]   (from the source root)

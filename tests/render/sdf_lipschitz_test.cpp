@@ -1,4 +1,4 @@
-// The honest-bounds property (issue 5): every node type is sampled on random point pairs, near
+// The honest-bounds property: every node type is sampled on random point pairs, near
 // and far apart, and |f(p) − f(q)| ≤ L·|p − q| must hold with the L the node reports. A node
 // that understated L would let the tracer step through its surface.
 #include <gtest/gtest.h>

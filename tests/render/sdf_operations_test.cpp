@@ -1,4 +1,4 @@
-// SDF nodes against closed forms and truth tables (issue 5): primitive distances at known
+// SDF nodes against closed forms and truth tables: primitive distances at known
 // points, the CSG truth table on random points, the smooth operations' continuity and
 // material weights, repetition and symmetry mapping points to the right cell, transforms
 // against their closed forms, and scene-file errors that name the node and the key.

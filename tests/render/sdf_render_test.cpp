@@ -1,4 +1,4 @@
-// Tracing SDF scenes (issue 5): every primary ray of a small scene against a fine-step
+// Tracing SDF scenes: every primary ray of a small scene against a fine-step
 // reference march (no holes, depths agree), the speed-ups change the work but not the picture,
 // and an algebraic surface in a plain union keeps its exact first root.
 #include <gtest/gtest.h>
