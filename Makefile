@@ -4,6 +4,7 @@ PRESET ?= $(if $(CI),ci,release)
 JOBS ?= 2
 BUILD := build/$(PRESET)
 LOCUS := $(BUILD)/cli/locus
+BENCH := $(BUILD)/bench/locus-bench
 
 .PHONY: all deps configure build demo test fuzz bench notebooks format clean
 
@@ -30,7 +31,7 @@ fuzz:
 	scripts/run-fuzzers --seconds $(FUZZ_SECONDS)
 
 bench: build
-	$(LOCUS) bench groebner
+	$(BENCH) groebner
 
 notebooks: deps
 	scripts/run-notebooks

@@ -1,5 +1,5 @@
 // The render benchmark suite, bench/data/surfaces/SUITE.txt: one surface a line,
-// `name | equation | clip radius | why`, `#` starting a comment line. Read by `locus bench
+// `name | equation | clip radius | why`, `#` starting a comment line. Read by `locus-bench
 // render` and by the render tests, so that both see the same surfaces.
 #pragma once
 

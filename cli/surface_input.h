@@ -1,5 +1,5 @@
 // Turning what a user names as a surface (an equation, a .param file, a scene) into compiled
-// polynomials, shared by `locus render`, `locus trace` and `locus bench render`.
+// polynomials, shared by `locus render`, `locus trace` and `locus-bench render`.
 #pragma once
 
 #include "cli/process_limits.h"

@@ -1,6 +1,6 @@
 // The primary rays of an image traced without shading: one ray through each pixel centre, first
 // hit by a TraceMethod, exactly as the renderer finds it (per-frame RayFamily restriction, the
-// same SurfaceTracer). This is what `locus bench render` times and compares with `exact`.
+// same SurfaceTracer). This is what `locus-bench render` times and compares with `exact`.
 #pragma once
 
 #include <vector>

@@ -129,8 +129,6 @@ expect "render an SDF scene with an implicitized leaf" 0 "primitive evaluations 
 printf '[[object]]\ntype = "union"\n[[object.children]]\ntype = "sphre"\n' > "$tmp/badtree.toml"
 expect "render: unknown node type names the node" 2 "badtree.toml: line 4, column 8: object[1].children[1].type: expected a node type" -- \
     "$locus" render "$tmp/badtree.toml" -o "$tmp/tree.png"
-expect "bench sdf runs and reports the speed-ups" 0 "grid100,101,101,all" -- \
-    "$locus" bench sdf --size 16 --min-seconds 0 --csv
 expect "render --timeout covers implicitizing --param" 3 "nothing written to" -- \
     "$locus" render --param bench/data/implicit/bezier_triangle3.param --timeout 0.01 \
     -o "$tmp/bezier.png" --size 16x16
@@ -139,20 +137,6 @@ expect "render timeout exits 3 and writes nothing" 3 "nothing written to" -- \
     -o "$tmp/timeout.png"
 if [[ -e "$tmp/timeout.png" ]]; then
     fail "render timeout wrote an image"
-fi
-expect "bench render compares sturm with exact, ray by ray" 0 "sphere,2,sturm,default,0,64," -- \
-    "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
-expect "bench render CSV header names the fastest runs" 0 "render_best_seconds,surf_best_seconds" -- \
-    "$locus" bench render --size 8 --cases sphere --methods sturm --surf off --min-seconds 0 --csv
-# The data row: 19 fields, no wrong ray, and without surf its two figures missing (-1) around
-# locus' fastest frame.
-bench_row=$("$locus" bench render --size 8 --cases sphere --methods sturm --surf off \
-    --min-seconds 0 --csv 2>/dev/null | grep '^sphere,2,sturm,')
-if [[ $(head -1 <<<"$bench_row" | awk -F, '{print NF}') != 19 ]] ||
-    ! grep -qE '^sphere,2,sturm,default,0,64,[^,]+,[^,]+,[^,]+,0,0,0,.*,-1,[0-9.e+-]+,-1$' <<<"$bench_row"; then
-    fail "bench render CSV row: $bench_row"
-else
-    echo "ok   bench render CSV row"; passes=$((passes + 1))
 fi
 expect "resultant honours --timeout" 3 "timeout: stopped after 1 s" -- \
     "$locus" implicitize bench/data/implicit/bezier_triangle3.param --method resultant --timeout 1

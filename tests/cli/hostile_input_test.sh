@@ -104,8 +104,6 @@ within 3 "a TOML param of /dev/zero" 2 "/dev/zero: line 1, column 1: expected UT
     "$locus" render "$tmp/zero_param.toml" -o "$tmp/zero.png"
 within 3 "an image beyond the pixel limit is refused before rendering" 5 "more than the limit of 67108864 pixels" -- \
     "$locus" render "$sphere" --size 16384x16384 --aov depth -o "$tmp/huge.exr"
-expect "bench render --size 100000" 2 "--size '100000': expected N from 1 to 4096" -- \
-    "$locus" bench render --size 100000
 awk 'BEGIN { printf "vars: "; for (i = 0; i < 20000; ++i) printf "%sx%d", (i ? "," : ""), i
     print ""; for (i = 0; i < 20000; ++i) print "x" i "^2-1" }' >"$tmp/vars.ideal"
 within "$(deadline 2)" "20 000 variables stop at --timeout 2" 3 "timeout" -- \
@@ -125,8 +123,6 @@ if [[ -w /dev/full ]]; then
         bash -c "echo '0 0 5 0 0 -1' | \"$locus\" trace '$sphere' >/dev/full"
     expect "ideal > /dev/full" 5 "cannot write" -- \
         bash -c "\"$locus\" ideal eliminate $cyclic x0 >/dev/full"
-    expect "bench > /dev/full" 5 "cannot write" -- bash -c "\"$locus\" bench render --size 4 \
-        --cases sphere --methods sturm --surf off --min-seconds 0 --csv >/dev/full"
 fi
 mkdir "$tmp/readonly" && chmod a-w "$tmp/readonly"
 if ! touch "$tmp/readonly/probe" 2>/dev/null; then  # (root can write anyway)
@@ -143,8 +139,6 @@ within 2 "demo -o /nonexistent/x.png" 2 "the folder '/nonexistent' does not exis
     "$locus" demo -o /nonexistent/x.png
 
 ## 7. Validation, one rule per option.
-expect "bench render --size 0" 2 "--size '0': expected N from 1 to 4096" -- "$locus" bench render --size 0
-expect "bench render --size -1" 2 "--size '-1'" -- "$locus" bench render --size -1
 expect "render --samples 0" 2 "--samples '0': expected N from 1 to 16" -- \
     "$locus" render "$sphere" --samples 0 -o "$tmp/s.png"
 expect "render --threads -1" 2 "--threads '-1'" -- "$locus" render "$sphere" --threads -1 -o "$tmp/s.png"

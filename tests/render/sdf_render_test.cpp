@@ -145,7 +145,7 @@ TEST(SdfRender, NoHolesAgainstAFineStepReference) {
 }
 
 TEST(SdfRender, SpeedUpsChangeTheWorkNotThePicture) {
-    // A hundred primitives in a plain union, as in `locus bench sdf`.
+    // A hundred primitives in a plain union, as in `locus-bench sdf`.
     const MaterialPtr m = plain_material();
     std::vector<NodePtr> objects{make_plane({0, 1, 0}, -0.5, m)};
     for (int i = 0; i < 10; ++i) {

@@ -1,11 +1,15 @@
-#include "cli/sdf_bench.h"
-
+// `locus-bench sdf`: Hart's speed-ups on SDF scenes (bench/data/sdf/SUITE.txt). Every scene's
+// primary rays are traced (no shading) with the speed-ups off, each one alone, and all on;
+// the rows give rays per second, primitive evaluations per ray and the share of pixels whose
+// first hit differs from the plain march.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <memory>
 
 #include "algebra/error.h"
+#include "bench/bench_options.h"
+#include "bench/benches.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
 #include "cli/surface_input.h"
@@ -14,8 +18,17 @@
 #include "render/sdf/scene_tracer.h"
 #include "render/sdf/sdf_renderer.h"
 
-namespace locus::cli {
+namespace locus::bench {
 namespace {
+
+using cli::CommandFailure;
+using cli::exit_input;
+using cli::exit_ok;
+
+struct SdfBenchArgs {
+    SuiteOptions suite;
+    int size = 256;  // image width; the height follows the scene's aspect
+};
 
 struct Setting {
     const char* name;
@@ -82,23 +95,11 @@ double share_differing(const Frame& a, const Frame& reference, double tolerance)
     return static_cast<double>(differing) / static_cast<double>(a.hits.size());
 }
 
-}  // namespace
-
 int run_sdf_bench(const SdfBenchArgs& args) {
-    const std::string dir = args.data_dir + "/sdf";
-    std::vector<std::string> cases = args.cases;
-    if (cases.empty()) {
-        std::ifstream suite(dir + "/SUITE.txt");
-        if (!suite) {
-            throw CommandFailure(exit_input, "bench sdf: cannot read " + dir + "/SUITE.txt");
-        }
-        for (std::string line; std::getline(suite, line);) {
-            if (!line.empty() && line[0] != '#') {
-                cases.push_back(line);
-            }
-        }
-    }
-    if (args.csv) {
+    check_suite_options(args.suite);
+    const std::string dir = args.suite.data_dir + "/sdf";
+    const std::vector<std::string> cases = suite_case_names(dir, args.suite.cases);
+    if (args.suite.csv) {
         std::printf(
             "scene,items,primitives,setting,width,height,seconds,rays_per_second,"
             "evaluations_per_ray,root_work_per_ray,hits,differing_share\n");
@@ -110,11 +111,11 @@ int run_sdf_bench(const SdfBenchArgs& args) {
         const std::string path = dir + "/" + name + ".toml";
         render::Scene scene;
         try {
-            scene = render::parse_scene(read_input(path), scene_surface_compiler());
+            scene = render::parse_scene(cli::read_input(path), cli::scene_surface_compiler());
         } catch (const Error& e) {
             throw CommandFailure(exit_input, path + ": " + e.what());
         }
-        std::vector<algebra::CompiledPolynomial> compiled = compile_surfaces(scene);
+        std::vector<algebra::CompiledPolynomial> compiled = cli::compile_surfaces(scene);
         const std::vector<render::sdf::NodePtr> items = render::scene_items(scene, compiled);
         const int width = args.size;
         const int height = std::max(1, width * scene.height / scene.width);
@@ -130,7 +131,7 @@ int run_sdf_bench(const SdfBenchArgs& args) {
         std::vector<Frame> frames;
         for (const Setting& setting : kSettings) {
             frames.push_back(trace_frame(items, scale, camera, width, height, setting.speed_ups,
-                                         args.min_seconds));
+                                         args.suite.min_seconds));
         }
         const double rays = static_cast<double>(width) * height;
         const double plain_evaluations = frames.front().evaluations / rays;
@@ -142,7 +143,7 @@ int run_sdf_bench(const SdfBenchArgs& args) {
             }
             const double evaluations = f.evaluations / rays;
             const double differing = share_differing(f, frames.front(), 1e-3);
-            if (args.csv) {
+            if (args.suite.csv) {
                 std::printf("%s,%d,%d,%s,%d,%d,%.6f,%.1f,%.3f,%.3f,%ld,%.6f\n", name.c_str(),
                             flat.item_count(), primitives, kSettings[s].name, width, height,
                             f.seconds, rays / f.seconds, evaluations, f.root_work / rays, hits,
@@ -157,4 +158,15 @@ int run_sdf_bench(const SdfBenchArgs& args) {
     return exit_ok;
 }
 
-}  // namespace locus::cli
+}  // namespace
+
+void add_sdf_bench(CLI::App& app, cli::CommandContext& context) {
+    auto args = std::make_shared<SdfBenchArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "sdf", "Hart's speed-ups on the SDF scene suite (bench/data/sdf), each alone and all on");
+    add_suite_options(cmd, args->suite);
+    add_size_option(cmd, args->size, "image width (256); the height follows the scene's aspect");
+    cmd->callback([args, &context] { context.exit_code = run_sdf_bench(*args); });
+}
+
+}  // namespace locus::bench

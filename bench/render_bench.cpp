@@ -1,4 +1,4 @@
-// `locus bench render [--csv] [--size N] [--methods a,b] [--cases a,b] [--threads T]`
+// `locus-bench render [--csv] [--size N] [--methods a,b] [--cases a,b] [--threads T]`
 //
 // For each suite surface: the primary rays through the pixel centres of an N×N image (default
 // camera framing the clip sphere), first hits only, no shading. `exact` is traced once as the
@@ -12,7 +12,6 @@
 // cores). Both are the median of repeated runs, which shrugs off runs slowed by other work on a
 // shared machine, and the two programs take turns (time_side_by_side) so that both see the same
 // spells of load.
-#include "cli/render_bench.h"
 
 #include <unistd.h>
 
@@ -23,9 +22,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include "algebra/error.h"
+#include "bench/bench_options.h"
+#include "bench/benches.h"
 #include "bench/surface_suite.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
@@ -33,14 +35,26 @@
 #include "render/renderer.h"
 #include "render/scene.h"
 
-namespace locus::cli {
+namespace locus::bench {
 namespace {
 
-using bench::SuiteSurface;
+using cli::CommandFailure;
+using cli::exit_input;
+using cli::exit_ok;
+using cli::on_path;
+using cli::read_input;
+
+struct RenderBenchArgs {
+    SuiteOptions suite;
+    std::vector<std::string> methods;      // empty: all but exact
+    int size = 128;                        // size×size primary rays per surface
+    int threads = 1;                       // the speed targets are single-core figures
+    std::string surf = "surf-alggeo-nox";  // same-run reference renderer, or "off"
+};
 
 std::vector<SuiteSurface> read_suite(const std::string& path) {
     try {
-        return bench::parse_surface_suite(read_input(path));
+        return parse_surface_suite(read_input(path));
     } catch (const Error& e) {
         throw CommandFailure(exit_input, path + ": " + e.what());
     }
@@ -228,18 +242,16 @@ std::vector<double> shade_image(const algebra::CompiledPolynomial& f, const rend
     return shade;
 }
 
-}  // namespace
-
 int run_render_bench(const RenderBenchArgs& args) {
-    std::vector<SuiteSurface> suite = read_suite(args.data_dir + "/surfaces/SUITE.txt");
-    if (!args.cases.empty()) {
+    check_suite_options(args.suite);
+    std::vector<SuiteSurface> suite = read_suite(args.suite.data_dir + "/surfaces/SUITE.txt");
+    if (!args.suite.cases.empty()) {
         std::vector<SuiteSurface> chosen;
-        for (const std::string& name : args.cases) {
+        for (const std::string& name : args.suite.cases) {
             const auto it = std::find_if(suite.begin(), suite.end(),
                                          [&](const SuiteSurface& s) { return s.name == name; });
             if (it == suite.end()) {
-                throw CommandFailure(exit_input,
-                                     "bench render: no surface '" + name + "' in the suite");
+                throw CommandFailure(exit_input, "render: no surface '" + name + "' in the suite");
             }
             chosen.push_back(*it);
         }
@@ -257,7 +269,7 @@ int run_render_bench(const RenderBenchArgs& args) {
         }
     }
     const bool with_surf = args.surf != "off" && on_path(args.surf);
-    if (args.csv) {
+    if (args.suite.csv) {
         std::cout << "case,degree,method,setting,tolerance,rays,seconds,rays_per_second,"
                      "work_per_ray,wrong_rays,wrong_share,unknown_rays,max_depth_error,"
                      "mean_depth_error,image_rms,render_seconds,surf_seconds,"
@@ -293,7 +305,7 @@ int run_render_bench(const RenderBenchArgs& args) {
             surf.emplace(args.surf, s, args.size);
         }
         const Comparison timing =
-            time_side_by_side(frame, surf ? &*surf : nullptr, args.min_seconds);
+            time_side_by_side(frame, surf ? &*surf : nullptr, args.suite.min_seconds);
         const double surf_seconds = timing.surf.median;
         const double render_seconds = timing.locus.median;
         const double render_best = timing.locus.best;
@@ -309,7 +321,7 @@ int run_render_bench(const RenderBenchArgs& args) {
                                                     args.threads, setting.factor);
                 total += traced.seconds;
                 ++runs;
-            } while (total < args.min_seconds && runs < 50);
+            } while (total < args.suite.min_seconds && runs < 50);
             const double seconds = total / runs;
             long wrong = 0, unknown = 0, work = 0, compared = 0;
             double max_error = 0.0, sum_error = 0.0;
@@ -345,7 +357,7 @@ int run_render_bench(const RenderBenchArgs& args) {
                 square_sum += d * d;
             }
             const double image_rms = std::sqrt(square_sum / static_cast<double>(shade.size()));
-            if (args.csv) {
+            if (args.suite.csv) {
                 std::cout << s.name << "," << f.degree() << "," << render::to_string(method) << ","
                           << setting.name << "," << setting.tolerance << "," << traced.hits.size()
                           << "," << seconds << "," << rays / seconds << "," << work / rays << ","
@@ -377,4 +389,20 @@ int run_render_bench(const RenderBenchArgs& args) {
     return exit_ok;
 }
 
-}  // namespace locus::cli
+}  // namespace
+
+void add_render_bench(CLI::App& app, cli::CommandContext& context) {
+    auto args = std::make_shared<RenderBenchArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "render",
+        "Every trace method on the surface suite (bench/data/surfaces) against exact "
+        "isolation, and surf's time");
+    add_suite_options(cmd, args->suite);
+    add_size_option(cmd, args->size, "N×N primary rays per surface (128)");
+    add_threads_option(cmd, args->threads);
+    cmd->add_option("--methods", args->methods, "only these trace methods")->delimiter(',');
+    cmd->add_option("--surf", args->surf, "surf executable for the same-run reference, or 'off'");
+    cmd->callback([args, &context] { context.exit_code = run_render_bench(*args); });
+}
+
+}  // namespace locus::bench

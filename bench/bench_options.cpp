@@ -1,0 +1,98 @@
+#include "bench/bench_options.h"
+
+#include <fstream>
+
+#include "cli/command_support.h"
+#include "cli/exit_codes.h"
+
+namespace locus::bench {
+
+void add_suite_options(CLI::App* command, SuiteOptions& options) {
+    command->add_option("--data", options.data_dir,
+                        "folder of the suites (bench/data of the source tree by default)");
+    command->add_option("--cases", options.cases, "run only these cases")->delimiter(',');
+    command->add_flag("--csv", options.csv, "write CSV rows instead of a table");
+    command->add_option("--min-seconds", options.min_seconds,
+                        "repeat each measurement until this much time has passed (0 to 3600)");
+    cli::add_process_limit_options(command, options.limits);
+}
+
+void check_suite_options(const SuiteOptions& options) {
+    cli::apply_process_limits(options.limits);
+    if (!(options.min_seconds >= 0.0) || !(options.min_seconds <= 3600.0)) {
+        throw cli::CommandFailure(cli::exit_input,
+                                  "--min-seconds: expected seconds from 0 to 3600");
+    }
+}
+
+namespace {
+
+// A whole number in [low, high], checked while the command line is parsed; CLI11 puts the
+// option's name in front: "--size: '0': expected N from 1 to 4096 (N×N rays)".
+CLI::Validator integer_range(long low, long high, const std::string& expected) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            std::size_t used = 0;
+            long value = 0;
+            try {
+                value = std::stol(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used == 0 || used != text.size() || value < low || value > high) {
+                return "'" + text + "': expected " + expected;
+            }
+            return {};
+        },
+        std::to_string(low) + ".." + std::to_string(high));
+}
+
+}  // namespace
+
+CLI::Validator one_of(std::vector<std::string> names) {
+    std::string expected;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        expected += i == 0 ? "" : i + 1 == names.size() ? " or " : ", ";
+        expected += names[i];
+    }
+    return CLI::Validator(
+        [names, expected](std::string& text) -> std::string {
+            for (const std::string& name : names) {
+                if (text == name) {
+                    return {};
+                }
+            }
+            return "'" + text + "': expected " + expected;
+        },
+        expected);
+}
+
+void add_size_option(CLI::App* command, int& size, const std::string& description) {
+    command->add_option("--size", size, description)
+        ->check(integer_range(1, 4096, "N from 1 to 4096 (N×N rays)"));
+}
+
+void add_threads_option(CLI::App* command, int& threads) {
+    command->add_option("--threads", threads, "worker threads (1); 0 for every core")
+        ->check(integer_range(0, 1024, "a count from 1 to 1024, or 0 for every core"));
+}
+
+std::vector<std::string> suite_case_names(const std::string& dir,
+                                          const std::vector<std::string>& chosen) {
+    if (!chosen.empty()) {
+        return chosen;
+    }
+    std::ifstream suite(dir + "/SUITE.txt");
+    if (!suite) {
+        throw cli::CommandFailure(cli::exit_input, dir + "/SUITE.txt: cannot open (use --data)");
+    }
+    std::vector<std::string> cases;
+    for (std::string name; std::getline(suite, name);) {
+        if (!name.empty() && name[0] != '#') {
+            cases.push_back(name);
+        }
+    }
+    return cases;
+}
+
+}  // namespace locus::bench

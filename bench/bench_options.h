@@ -1,0 +1,42 @@
+// Options every suite of `locus-bench` takes, and the suite files' case lists.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/process_limits.h"
+
+namespace locus::bench {
+
+struct SuiteOptions {
+    std::string data_dir = LOCUS_BENCH_DATA;  // bench/data of the source tree it was built from
+    std::vector<std::string> cases;           // empty: the whole suite
+    bool csv = false;
+    double min_seconds = 0.2;  // repeat each measurement until this much time has passed
+    cli::ProcessLimitArgs limits;
+};
+
+// Adds --data, --cases, --csv, --min-seconds, --timeout and --max-memory to a suite's
+// subcommand.
+void add_suite_options(CLI::App* command, SuiteOptions& options);
+
+// Applies the process limits and checks the options shared by every suite (CommandFailure,
+// exit 2, for a value out of range).
+void check_suite_options(const SuiteOptions& options);
+
+// A validator accepting only these names: "--algorithm: 'magic': expected auto, buchberger,
+// signature or modular".
+CLI::Validator one_of(std::vector<std::string> names);
+
+// --size and --threads of the render and SDF suites, with their ranges.
+void add_size_option(CLI::App* command, int& size, const std::string& description);
+void add_threads_option(CLI::App* command, int& threads);
+
+// The names of a suite's cases: `chosen` when it is not empty, else the lines of
+// `dir`/SUITE.txt that are neither empty nor comments ('#').
+std::vector<std::string> suite_case_names(const std::string& dir,
+                                          const std::vector<std::string>& chosen);
+
+}  // namespace locus::bench
