@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
 
@@ -25,56 +26,14 @@ void check_suite_options(const SuiteOptions& options) {
     }
 }
 
-namespace {
-
-// A whole number in [low, high], checked while the command line is parsed; CLI11 puts the
-// option's name in front: "--size: '0': expected N from 1 to 4096 (N×N rays)".
-CLI::Validator integer_range(long low, long high, const std::string& expected) {
-    return CLI::Validator(
-        [=](std::string& text) -> std::string {
-            std::size_t used = 0;
-            long value = 0;
-            try {
-                value = std::stol(text, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used == 0 || used != text.size() || value < low || value > high) {
-                return "'" + text + "': expected " + expected;
-            }
-            return {};
-        },
-        std::to_string(low) + ".." + std::to_string(high));
-}
-
-}  // namespace
-
-CLI::Validator one_of(std::vector<std::string> names) {
-    std::string expected;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        expected += i == 0 ? "" : i + 1 == names.size() ? " or " : ", ";
-        expected += names[i];
-    }
-    return CLI::Validator(
-        [names, expected](std::string& text) -> std::string {
-            for (const std::string& name : names) {
-                if (text == name) {
-                    return {};
-                }
-            }
-            return "'" + text + "': expected " + expected;
-        },
-        expected);
-}
-
 void add_size_option(CLI::App* command, int& size, const std::string& description) {
     command->add_option("--size", size, description)
-        ->check(integer_range(1, 4096, "N from 1 to 4096 (N×N rays)"));
+        ->check(cli::integer_range(1, 4096, "N from 1 to 4096 (N×N rays)"));
 }
 
 void add_threads_option(CLI::App* command, int& threads) {
     command->add_option("--threads", threads, "worker threads (1); 0 for every core")
-        ->check(integer_range(0, 1024, "a count from 1 to 1024, or 0 for every core"));
+        ->check(cli::integer_range(0, 1024, "a count from 1 to 1024, or 0 for every core"));
 }
 
 std::vector<std::string> suite_case_names(const std::string& dir,

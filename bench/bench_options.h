@@ -26,10 +26,6 @@ void add_suite_options(CLI::App* command, SuiteOptions& options);
 // exit 2, for a value out of range).
 void check_suite_options(const SuiteOptions& options);
 
-// A validator accepting only these names: "--algorithm: 'magic': expected auto, buchberger,
-// signature or modular".
-CLI::Validator one_of(std::vector<std::string> names);
-
 // --size and --threads of the render and SDF suites, with their ranges.
 void add_size_option(CLI::App* command, int& size, const std::string& description);
 void add_threads_option(CLI::App* command, int& threads);

@@ -16,6 +16,7 @@
 #include "bench/bench_options.h"
 #include "bench/benches.h"
 #include "bench/singular.h"
+#include "cli/choices.h"
 #include "cli/command_support.h"
 
 namespace locus::bench {
@@ -102,9 +103,10 @@ void add_groebner_bench(CLI::App& app, cli::CommandContext& context) {
     CLI::App* cmd = app.add_subcommand(
         "groebner", "Gröbner bases of the suite (bench/data/SUITE.txt) against Singular's std");
     add_suite_options(cmd, args->suite);
-    cmd->add_option("--algorithm", args->algorithm,
-                    "auto (default) | buchberger | signature | modular (certified)")
-        ->check(one_of({"auto", "buchberger", "signature", "modular"}));
+    cli::add_choice(
+        cmd, "--algorithm", args->algorithm,
+        {{"auto", "the default"}, {"buchberger", ""}, {"signature", ""}, {"modular", "certified"}},
+        "the algorithm, as `locus groebner --algorithm`");
     cmd->add_option("--singular", args->singular,
                     "Singular executable for the same-run reference, or 'off'");
     cmd->callback([args, &context] { context.exit_code = run_groebner_bench(*args); });

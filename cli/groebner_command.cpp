@@ -10,6 +10,7 @@
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/print.h"
+#include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -100,9 +101,6 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
         options.selection = algebra::SelectionStrategy::sugar;
     } else if (args.selection == "degree") {
         options.selection = algebra::SelectionStrategy::degree;
-    } else if (args.selection != "auto") {
-        throw CommandFailure(exit_input, "--selection " + args.selection +
-                                             ": expected auto, sugar, degree or normal");
     }
     options.deadline = deadline;
     if (args.threads < 0) {
@@ -113,12 +111,6 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     options.threads = args.threads > 0
                           ? args.threads
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    if (args.algorithm != "auto" && args.algorithm != "buchberger" &&
-        args.algorithm != "signature" && args.algorithm != "f4" && args.algorithm != "modular") {
-        throw CommandFailure(exit_input,
-                             "--algorithm " + args.algorithm +
-                                 ": expected auto, buchberger, signature, f4 or modular");
-    }
     if (args.algorithm == "f4") {
         // The reduced basis over Z/pZ, coefficients printed in [0, p).
         algebra::modular::F4Options f4_options;
@@ -220,14 +212,19 @@ void add_groebner_command(CLI::App& app, CommandContext& context) {
     cmd->add_option("--order", args->order,
                     "override the file's order: lex, grlex, grevlex, weights(..), elim(..), "
                     "matrix(..)");
-    cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
-    cmd->add_option("--selection", args->selection,
-                    "pair selection: auto (default) | sugar | degree | normal");
-    cmd->add_option("--algorithm", args->algorithm,
-                    "auto (default: signature for up to 100 ms under degree orders, 1 ms "
-                    "under others, then modular) | buchberger | signature (signature-based, "
-                    "over Q) | modular (multi-modular F4 over Q, certified) | f4 (the basis "
-                    "modulo --prime)");
+    add_choice(cmd, "--format", args->format, output_format_choices(), "output");
+    add_choice(cmd, "--selection", args->selection,
+               {{"auto", "the default"}, {"sugar", ""}, {"degree", ""}, {"normal", ""}},
+               "Buchberger's pair selection");
+    add_choice(cmd, "--algorithm", args->algorithm,
+               {{"auto",
+                 "the default: signature for up to 100 ms under degree orders, 1 ms "
+                 "under others, then modular"},
+                {"buchberger", ""},
+                {"signature", "signature-based, over Q"},
+                {"f4", "the basis modulo --prime"},
+                {"modular", "multi-modular F4 over Q, certified"}},
+               "the algorithm");
     cmd->add_option("--prime", args->prime, "the prime below 2^31 of --algorithm f4 (2147483647)");
     cmd->add_flag("--no-certify", args->no_certify,
                   "modular: skip the exact certification (the result is then probabilistic)");

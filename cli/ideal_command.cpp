@@ -7,6 +7,7 @@
 #include "algebra/ideal_ops.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
+#include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -205,7 +206,7 @@ void add_ideal_command(CLI::App& app, CommandContext& context) {
     cmd->add_option("file", args->first, "ideal file (- for standard input)")->required();
     cmd->add_option("argument", args->second, "second ideal file, polynomial or variables");
     cmd->add_option("--order", args->order, "override the first file's order");
-    cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
+    add_choice(cmd, "--format", args->format, output_format_choices(), "output");
     add_process_limit_options(cmd, args->limits);
     cmd->callback([args, &context] { context.exit_code = run_ideal(*args, context.progress); });
 }

@@ -8,6 +8,7 @@
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
 #include "algebra/print.h"
+#include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -28,11 +29,6 @@ struct ImplicitizeArgs {
 int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
     const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
-    if (args.method != "auto" && args.method != "groebner" && args.method != "resultant" &&
-        args.method != "interpolate") {
-        throw CommandFailure(exit_input, "--method " + args.method +
-                                             ": expected auto, groebner, resultant or interpolate");
-    }
     std::string text, source;
     if (!args.params.empty()) {
         text = "params: " + args.params + "\n";
@@ -133,10 +129,15 @@ void add_implicitize_command(CLI::App& app, CommandContext& context) {
                     "\"x = ...\"")
         ->required();
     cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
-    cmd->add_option("--method", args->method,
-                    "auto (groebner for 20 ms, then interpolation, then resultant, for plane "
-                    "curves and surfaces) | groebner | resultant | interpolate");
-    cmd->add_option("--format", args->format, "normalized | singular | macaulay2 | latex");
+    add_choice(cmd, "--method", args->method,
+               {{"auto",
+                 "the default: for plane curves and surfaces groebner for 20 ms, then "
+                 "interpolate, then resultant"},
+                {"groebner", "elimination"},
+                {"resultant", "iterated Sylvester resultants"},
+                {"interpolate", "the kernel modulo primes"}},
+               "the route");
+    add_choice(cmd, "--format", args->format, output_format_choices(), "output");
     add_process_limit_options(cmd, args->limits);
     cmd->callback(
         [args, &context] { context.exit_code = run_implicitize(*args, context.progress); });

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "algebra/error.h"
+#include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -258,17 +259,15 @@ void add_render_command(CLI::App& app, CommandContext& context) {
     cmd->add_option("--fov", args->fov, "vertical field of view in degrees (default 35)");
     cmd->add_option("--clip-radius", args->clip_radius,
                     "clip every surface to a sphere of this radius about the origin (default 2)");
-    cmd->add_option("--method", args->method,
-                    "certified (default) | sturm | bernstein | laguerre | eigen | "
-                    "sphere-gradient | "
-                    "sphere-lipschitz | exact");
+    add_choice(cmd, "--method", args->method, trace_method_choices(), "the root finder");
     cmd->add_option("--samples", args->samples, "N: N×N samples per pixel (default 1)");
-    cmd->add_option("--shadows", args->shadows, "on (default) | off");
-    cmd->add_option("--ao", args->ao, "ambient occlusion: on | off (default)");
+    add_choice(cmd, "--shadows", args->shadows, on_off_choices(), "shadows (default on)");
+    add_choice(cmd, "--ao", args->ao, on_off_choices(), "ambient occlusion (default off)");
     cmd->add_option("--background", args->background, "background colour R,G,B (linear, 0..1)");
     cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
     add_process_limit_options(cmd, args->limits);
-    cmd->add_option("--aov", args->aovs, "also write depth | normal | work as <stem>.<aov>.exr")
+    add_choice(cmd, "--aov", args->aovs, {{"depth", ""}, {"normal", ""}, {"work", ""}},
+               "also write these as <stem>.<aov>.exr, comma-separated")
         ->delimiter(',');
     cmd->callback([args, &context] { context.exit_code = run_render(*args, context.progress); });
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "algebra/error.h"
+#include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -76,10 +77,7 @@ void add_trace_command(CLI::App& app, CommandContext& context) {
         "(tangent and singular contacts included); 'miss' only when there is no root there.\n"
         "The other methods are floating-point estimates without that guarantee.");
     cmd->add_option("equation", args->equation, "f(x, y, z)")->required();
-    cmd->add_option("--method", args->method,
-                    "certified (default) | sturm | bernstein | laguerre | eigen | "
-                    "sphere-gradient | "
-                    "sphere-lipschitz | exact");
+    add_choice(cmd, "--method", args->method, trace_method_choices(), "the root finder");
     cmd->add_option("--t-max", args->t_max, "search t in (0, T] (default 100)");
     add_process_limit_options(cmd, args->limits);
     cmd->callback([args, &context] { context.exit_code = run_trace(*args); });

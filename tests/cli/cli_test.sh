@@ -115,8 +115,14 @@ expect "render: degenerate camera" 2 "camera.eye" -- \
     "$locus" render "x^2+y^2+z^2-1" --eye 1,1,1 --target 1,1,1 -o "$tmp/cam.png"
 expect "render: bad flag value" 2 "--size '12': expected WIDTHxHEIGHT" -- \
     "$locus" render "x^2+y^2+z^2-1" --size 12 -o "$tmp/size.png"
-expect "render: unknown method" 2 "unknown method" -- \
+expect "render: unknown method" 2 "--method: 'magic': expected certified, sturm, bernstein, laguerre, eigen, sphere-gradient, sphere-lipschitz or exact" -- \
     "$locus" render "x^2+y^2+z^2-1" --method magic -o "$tmp/m.png"
+expect "implicitize: unknown method" 2 "--method: 'fast': expected auto, groebner, resultant or interpolate" -- \
+    "$locus" implicitize -p t "x = t" "y = t^2" --method fast
+expect "render: --shadows takes on or off" 2 "--shadows: 'yes': expected on or off" -- \
+    "$locus" render "x^2+y^2+z^2-1" --shadows yes -o "$tmp/m.png"
+expect "render: unknown AOV" 2 "--aov: 'albedo': expected depth, normal or work" -- \
+    "$locus" render "x^2+y^2+z^2-1" --aov depth,albedo -o "$tmp/m.png"
 printf '[[surface]]\nequation = "x^2+y^2+z^2-1"\nradius = 2\n' > "$tmp/bad.toml"
 expect "render: unknown scene key" 2 "bad.toml: line 3, column 1: surface[1].radius: unknown key" -- \
     "$locus" render "$tmp/bad.toml" -o "$tmp/scene.png"
