@@ -142,6 +142,64 @@ RationalFunction divide(const RationalFunction& p, const RationalFunction& q,
     return p / q;
 }
 
+// The most work one expression may take to expand, in the unit of kMaxPowerWork (products of
+// 64-bit limbs): a few seconds. Each operation is bounded on its own too, but an expression
+// can chain hundreds of them ((1-t)^126*(1-s)^9*... over many terms, a fuzzer's timeout).
+constexpr double kMaxExpressionWork = 3 * kMaxPowerWork;
+
+// The widest coefficient of p, in bits (numerator and denominator).
+double widest_bits(const Polynomial& p) {
+    double widest = 0.0;
+    for (std::size_t i = 0; i < p.num_terms(); ++i) {
+        const Rational& c = p.coefficient(i);
+        widest = std::max(
+            widest, static_cast<double>(fmpz_bits(c.numerator()) + fmpz_bits(c.denominator())));
+    }
+    return widest;
+}
+
+// Limb products of a·b: every pair of terms, weighted by the limbs of the wider coefficients.
+double multiplication_work(const Polynomial& a, const Polynomial& b) {
+    return static_cast<double>(a.num_terms()) * static_cast<double>(b.num_terms()) *
+           (1.0 + (widest_bits(a) + widest_bits(b)) / 64.0);
+}
+
+// The work of the arithmetic steps in the two value types. Polynomial sums merge (linear, not
+// counted); rational functions cross-multiply.
+double product_work(const Polynomial& a, const Polynomial& b) {
+    return multiplication_work(a, b);
+}
+double product_work(const RationalFunction& a, const RationalFunction& b) {
+    return multiplication_work(a.numerator(), b.numerator()) +
+           multiplication_work(a.denominator(), b.denominator());
+}
+double quotient_work(const Polynomial& a, const Polynomial&) {
+    return static_cast<double>(a.num_terms());
+}
+double quotient_work(const RationalFunction& a, const RationalFunction& b) {
+    return multiplication_work(a.numerator(), b.denominator()) +
+           multiplication_work(a.denominator(), b.numerator());
+}
+double sum_work(const Polynomial&, const Polynomial&) {
+    return 0.0;
+}
+double sum_work(const RationalFunction& a, const RationalFunction& b) {
+    if (a.denominator() == b.denominator()) {
+        return 0.0;
+    }
+    return multiplication_work(a.numerator(), b.denominator()) +
+           multiplication_work(b.numerator(), a.denominator()) +
+           multiplication_work(a.denominator(), b.denominator());
+}
+// A power is bounded on its own before it is expanded (Polynomial::pow); afterwards it counts
+// about as much as its last multiplication, a quarter of squaring the result.
+double power_work(const Polynomial& result) {
+    return multiplication_work(result, result) / 4.0;
+}
+double power_work(const RationalFunction& result) {
+    return power_work(result.numerator()) + power_work(result.denominator());
+}
+
 // Recursive descent over:  sum := product (('+'|'-') product)*
 //   product := unary (('*'|'/') unary)*   unary := ('+'|'-') unary | power
 //   power := atom ('^' integer)?          atom := number | variable | '(' sum ')'
@@ -171,6 +229,19 @@ class InfixParser {
     }
 
   private:
+    // Counts the work of a step about to run (or just run, for a power) against
+    // kMaxExpressionWork.
+    void charge(double work, const Token& at) {
+        work_ += work;
+        if (work_ > kMaxExpressionWork) {
+            throw ResourceLimit("line " + std::to_string(at.line) + ", column " +
+                                std::to_string(at.column) +
+                                ": the expression would take more than " +
+                                std::to_string(static_cast<long>(kMaxExpressionWork)) +
+                                " limb products to expand (the limit)");
+        }
+    }
+
     [[noreturn]] void fail(const std::string& expected) {
         throw ParseError(token_.line, token_.column, expected, describe(token_));
     }
@@ -191,6 +262,7 @@ class InfixParser {
     // The summands are added pairwise, as in merge sort: adding them left to right merged the
     // whole partial sum at every '+', quadratic in the terms (a 60 000-term line took 22 s).
     Value sum() {
+        const Token start = token_;
         std::vector<Value> summands;
         summands.push_back(product());
         while (is_symbol('+') || is_symbol('-')) {
@@ -203,6 +275,7 @@ class InfixParser {
             std::vector<Value> halved;
             halved.reserve((summands.size() + 1) / 2);
             for (std::size_t i = 0; i + 1 < summands.size(); i += 2) {
+                charge(sum_work(summands[i], summands[i + 1]), start);
                 halved.push_back(summands[i] + summands[i + 1]);
             }
             if (summands.size() % 2 == 1) {
@@ -221,8 +294,10 @@ class InfixParser {
             const Token divisor_start = token_;
             Value q = unary();
             if (op.text == "*") {
+                charge(product_work(p, q), op);
                 p = guarded(op, [&] { return p * q; });
             } else {
+                charge(quotient_work(p, q), op);
                 p = divide(p, q, divisor_start);
             }
         }
@@ -264,12 +339,17 @@ class InfixParser {
             fail("no second '^' (write (a^b)^c)");
         }
         try {
-            return base.pow(k);
+            Value result = base.pow(k);
+            charge(power_work(result), op);
+            return result;
         } catch (const ExponentOverflow&) {
             throw ParseError(exponent_token.line, exponent_token.column,
                              "an exponent of at most " + std::to_string(limit),
                              "'" + digits + "' (the power overflows)");
         } catch (const ResourceLimit& refused) {
+            if (work_ > kMaxExpressionWork) {
+                throw;  // charge() named the place already
+            }
             // Still exit 5, but pointing at the power that was refused.
             throw ResourceLimit("line " + std::to_string(op.line) + ", column " +
                                 std::to_string(op.column) + ": " + refused.what());
@@ -399,6 +479,9 @@ class InfixParser {
         const Polynomial one = Polynomial::constant(ring_, Rational(1));
         Polynomial re = one, im(ring_), denominator = one;
         auto times = [&](const Polynomial& a, const Polynomial& b) {
+            charge(multiplication_work(re, a) + multiplication_work(im, b) +
+                       multiplication_work(re, b) + multiplication_work(im, a),
+                   token_);
             // (re + i·im)·(a + i·b)
             Polynomial next_re = re * a - im * b;
             im = re * b + im * a;
@@ -428,7 +511,8 @@ class InfixParser {
     }
 
     Lexer lexer_;
-    int depth_ = 0;  // parentheses open
+    int depth_ = 0;      // parentheses open
+    double work_ = 0.0;  // of the arithmetic so far (charge)
     const RingPtr& ring_;
     Trigonometry* trigonometry_;
     Token token_;

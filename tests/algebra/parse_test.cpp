@@ -61,6 +61,29 @@ TEST(Parse, MalformedInputsReportLineAndColumn) {
     }
 }
 
+// Every operation of these expressions is within its own bound, but together they would take
+// minutes to expand (a fuzzer's timeout in a .param file chained dozens of such products): the
+// whole expression has a budget, and the step that exceeds it is named.
+TEST(Parse, ExpressionWorkIsBoundedAsAWhole) {
+    const RingPtr st = PolyRing::make({"s", "t"}, MonomialOrder::grevlex(2));
+    const std::string chain = "(1-t)^800*(1+s)^800+(1-s)^800*(1+t)^800";
+    EXPECT_THROW(parse_polynomial(chain, st), ResourceLimit);
+    EXPECT_THROW(parse_rational_function(chain, st), ResourceLimit);
+    EXPECT_THROW(parse_rational_function("1/(1-t)^300+1/(1-s)^300+1/(1+t)^300+1/(1+s)^300", st),
+                 ResourceLimit);
+    try {
+        parse_polynomial(chain, st);
+    } catch (const ResourceLimit& e) {
+        // The power that crosses the budget: (1+t)^800, its '^' at column 36.
+        EXPECT_NE(std::string(e.what()).find("line 1, column 36: the expression would take more "
+                                             "than 30000000 limb products"),
+                  std::string::npos)
+            << e.what();
+    }
+    // Well inside the budget: the bicubic patch's products and a moderate power.
+    EXPECT_EQ(parse_polynomial("(1-t)^200*(1+s)^200", st).num_terms(), 201u * 201u);
+}
+
 TEST(Parse, IdealFile) {
     const IdealFile f = parse_ideal_file(
         "# comment\nvars: x, y ,z\norder: elim(z)  # block order\n\nx^2 - y\r\nz*x-1 # tail\n");
