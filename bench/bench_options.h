@@ -1,12 +1,14 @@
 // Options every suite of `locus-bench` takes, and the suite files' case lists.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/process_limits.h"
+#include "cli/run_app.h"
 
 namespace locus::bench {
 
@@ -21,6 +23,18 @@ struct SuiteOptions {
 // Adds --data, --cases, --csv, --min-seconds, --timeout and --max-memory to a suite's
 // subcommand.
 void add_suite_options(CLI::App* command, SuiteOptions& options);
+
+// A suite's subcommand: `args` (whose `suite` member gets the shared options) is filled by the
+// parser, then `run(*args)` sets the exit code. The caller adds the suite's own options.
+template <class Args>
+CLI::App* add_suite_command(CLI::App& app, cli::CommandContext& context, const std::string& name,
+                            const std::string& description, const std::shared_ptr<Args>& args,
+                            int (*run)(const Args&)) {
+    CLI::App* command = app.add_subcommand(name, description);
+    add_suite_options(command, args->suite);
+    command->callback([args, run, &context] { context.exit_code = run(*args); });
+    return command;
+}
 
 // Applies the process limits and checks the options shared by every suite (CommandFailure,
 // exit 2, for a value out of range).

@@ -100,16 +100,16 @@ int run_groebner_bench(const GroebnerBenchArgs& args) {
 
 void add_groebner_bench(CLI::App& app, cli::CommandContext& context) {
     auto args = std::make_shared<GroebnerBenchArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "groebner", "Gröbner bases of the suite (bench/data/SUITE.txt) against Singular's std");
-    add_suite_options(cmd, args->suite);
+    CLI::App* cmd = add_suite_command(
+        app, context, "groebner",
+        "Gröbner bases of the suite (bench/data/SUITE.txt) against Singular's std", args,
+        run_groebner_bench);
     cli::add_choice(
         cmd, "--algorithm", args->algorithm,
         {{"auto", "the default"}, {"buchberger", ""}, {"signature", ""}, {"modular", "certified"}},
         "the algorithm, as `locus groebner --algorithm`");
     cmd->add_option("--singular", args->singular,
                     "Singular executable for the same-run reference, or 'off'");
-    cmd->callback([args, &context] { context.exit_code = run_groebner_bench(*args); });
 }
 
 }  // namespace locus::bench

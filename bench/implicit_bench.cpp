@@ -116,16 +116,15 @@ int run_implicit_bench(const ImplicitBenchArgs& args) {
 
 void add_implicit_bench(CLI::App& app, cli::CommandContext& context) {
     auto args = std::make_shared<ImplicitBenchArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "implicit",
+    CLI::App* cmd = add_suite_command(
+        app, context, "implicit",
         "Implicitization of the suite (bench/data/implicit) by every route, against "
-        "Singular's eliminate");
-    add_suite_options(cmd, args->suite);
+        "Singular's eliminate",
+        args, run_implicit_bench);
     cmd->add_option("--limit", args->limit_seconds,
                     "give each route and Singular at most this many seconds per case (60)");
     cmd->add_option("--singular", args->singular,
                     "Singular executable for the same-run reference, or 'off'");
-    cmd->callback([args, &context] { context.exit_code = run_implicit_bench(*args); });
 }
 
 }  // namespace locus::bench

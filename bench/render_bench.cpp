@@ -393,16 +393,15 @@ int run_render_bench(const RenderBenchArgs& args) {
 
 void add_render_bench(CLI::App& app, cli::CommandContext& context) {
     auto args = std::make_shared<RenderBenchArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "render",
+    CLI::App* cmd = add_suite_command(
+        app, context, "render",
         "Every trace method on the surface suite (bench/data/surfaces) against exact "
-        "isolation, and surf's time");
-    add_suite_options(cmd, args->suite);
+        "isolation, and surf's time",
+        args, run_render_bench);
     add_size_option(cmd, args->size, "N×N primary rays per surface (128)");
     add_threads_option(cmd, args->threads);
     cmd->add_option("--methods", args->methods, "only these trace methods")->delimiter(',');
     cmd->add_option("--surf", args->surf, "surf executable for the same-run reference, or 'off'");
-    cmd->callback([args, &context] { context.exit_code = run_render_bench(*args); });
 }
 
 }  // namespace locus::bench

@@ -162,11 +162,11 @@ int run_sdf_bench(const SdfBenchArgs& args) {
 
 void add_sdf_bench(CLI::App& app, cli::CommandContext& context) {
     auto args = std::make_shared<SdfBenchArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "sdf", "Hart's speed-ups on the SDF scene suite (bench/data/sdf), each alone and all on");
-    add_suite_options(cmd, args->suite);
+    CLI::App* cmd = add_suite_command(
+        app, context, "sdf",
+        "Hart's speed-ups on the SDF scene suite (bench/data/sdf), each alone and all on", args,
+        run_sdf_bench);
     add_size_option(cmd, args->size, "image width (256); the height follows the scene's aspect");
-    cmd->callback([args, &context] { context.exit_code = run_sdf_bench(*args); });
 }
 
 }  // namespace locus::bench

@@ -277,6 +277,17 @@ def run_command(command, settings, workdir, env, limit):
     return problems
 
 
+def report(problems, item, text, ok_text):
+    """Prints one check's line (and its problems); returns 1 for a failure, else 0."""
+    if problems:
+        print(f"FAIL {item.where()}: {text}")
+        for p in problems:
+            print("     " + p)
+        return 1
+    print(f"ok   {item.where()}: {ok_text}")
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("locus")
@@ -316,13 +327,8 @@ def main():
                 for synopsis in synopses:
                     problems = check_synopsis(synopsis, locus, helps)
                     checked += 1
-                    if problems:
-                        failures += 1
-                        print(f"FAIL {synopsis.where()}: {synopsis.text}")
-                        for p in problems:
-                            print("     " + p)
-                    else:
-                        print(f"ok   {synopsis.where()}: (synopsis) {synopsis.text[:70]}")
+                    failures += report(problems, synopsis, synopsis.text,
+                                       f"(synopsis) {synopsis.text[:70]}")
                 if not commands:
                     continue
                 if not os.path.isdir(tree):
@@ -338,13 +344,8 @@ def main():
                         print(f"file {command.where()}: {command.text}")
                         continue
                     ran += 1
-                    if problems:
-                        failures += 1
-                        print(f"FAIL {command.where()}: $ {command.text}")
-                        for p in problems:
-                            print("     " + p)
-                    else:
-                        print(f"ok   {command.where()}: $ {command.text[:80]} ({took:.1f} s)")
+                    failures += report(problems, command, f"$ {command.text}",
+                                       f"$ {command.text[:80]} ({took:.1f} s)")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

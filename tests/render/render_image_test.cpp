@@ -10,6 +10,7 @@
 
 #include "algebra/error.h"
 #include "render/trace_method.h"
+#include "tests/support/trace_method_name.h"
 
 namespace locus::render {
 namespace {
@@ -63,7 +64,8 @@ TEST_P(SphereImage, SilhouetteRadiusAndCentreShadingMatchTheFormulas) {
     EXPECT_NEAR(image.normal[3 * centre + 2], 1.0, 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, SphereImage, ::testing::ValuesIn(all_trace_methods()));
+INSTANTIATE_TEST_SUITE_P(Methods, SphereImage, ::testing::ValuesIn(all_trace_methods()),
+                         test::trace_method_name);
 
 TEST(Render, NoPixelIsNanAtSingularPoints) {
     // The Cayley cubic's nodes and the Whitney umbrella's handle, with shadows and AO on.

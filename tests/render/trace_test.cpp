@@ -13,6 +13,7 @@
 #include "bench/surface_suite.h"
 #include "render/trace_method.h"
 #include "tests/support/test_data.h"
+#include "tests/support/trace_method_name.h"
 
 namespace locus::render {
 namespace {
@@ -43,12 +44,6 @@ Vec3 random_unit(std::mt19937_64& rng) {
 }
 
 class EveryMethod : public ::testing::TestWithParam<TraceMethod> {};
-
-std::string method_name(const ::testing::TestParamInfo<TraceMethod>& info) {
-    std::string name(to_string(info.param));
-    std::replace(name.begin(), name.end(), '-', '_');
-    return name;
-}
 
 // Tolerance on t for a method: estimates get a looser one, and the Lipschitz march stops once
 // its step falls below 1e-9 × the scene scale (here 2), so its error is of that order.
@@ -140,7 +135,8 @@ TEST_P(EveryMethod, TangentRayToASphereIsAHit) {
     EXPECT_NEAR(hit.t, 5.0, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Trace, EveryMethod, ::testing::ValuesIn(all_trace_methods()), method_name);
+INSTANTIATE_TEST_SUITE_P(Trace, EveryMethod, ::testing::ValuesIn(all_trace_methods()),
+                         test::trace_method_name);
 
 // Regressions from the stability atlas (docs/stability.md), for the default method: each ray is
 // traced by `certified` and by the exact method and must agree to the trace contract. (Sturm
