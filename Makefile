@@ -6,7 +6,7 @@ BUILD := build/$(PRESET)
 LOCUS := $(BUILD)/cli/locus
 BENCH := $(BUILD)/bench/locus-bench
 
-.PHONY: all deps configure build demo test fuzz bench notebooks format clean
+.PHONY: all deps configure build demo test fuzz mutants bench notebooks format clean
 
 all: build
 
@@ -29,6 +29,10 @@ test: build
 FUZZ_SECONDS ?= 60
 fuzz:
 	scripts/run-fuzzers --seconds $(FUZZ_SECONDS)
+
+# Small mutations of the core, each of which the tests must catch (docs/mutants.md).
+mutants: build
+	JOBS=$(JOBS) scripts/mutants --preset $(PRESET)
 
 bench: build
 	$(BENCH) groebner
