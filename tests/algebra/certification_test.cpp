@@ -286,7 +286,7 @@ std::vector<Polynomial> with_coefficient_changed(std::vector<Polynomial> basis, 
     for (std::size_t i = 0; i < g.num_terms(); ++i) {
         Rational c = g.coefficient(i);
         if (i + 1 == g.num_terms()) {
-            c = c + Rational(1, 7);
+            c = c == Rational(-1, 7) ? Rational(1, 7) : c + Rational(1, 7);  // never zero
         }
         changed.push_back_term(c, g.monomial(i));
     }
