@@ -148,21 +148,10 @@ RationalFunction divide(const RationalFunction& p, const RationalFunction& q,
 // terms, a fuzzer's timeout; at 3e7 the refusal itself took 11 s under the sanitizers).
 constexpr double kMaxExpressionWork = kMaxPowerWork;
 
-// The widest coefficient of p, in bits (numerator and denominator).
-double widest_bits(const Polynomial& p) {
-    double widest = 0.0;
-    for (std::size_t i = 0; i < p.num_terms(); ++i) {
-        const Rational& c = p.coefficient(i);
-        widest = std::max(
-            widest, static_cast<double>(fmpz_bits(c.numerator()) + fmpz_bits(c.denominator())));
-    }
-    return widest;
-}
-
 // Limb products of a·b: every pair of terms, weighted by the limbs of the wider coefficients.
 double multiplication_work(const Polynomial& a, const Polynomial& b) {
     return static_cast<double>(a.num_terms()) * static_cast<double>(b.num_terms()) *
-           (1.0 + (widest_bits(a) + widest_bits(b)) / 64.0);
+           (1.0 + (a.widest_coefficient_bits() + b.widest_coefficient_bits()) / 64.0);
 }
 
 // The work of the arithmetic steps in the two value types. Polynomial sums merge (linear, not
@@ -232,12 +221,11 @@ class InfixParser {
   private:
     // Counts the work of a step about to run (or just run, for a power) against
     // kMaxExpressionWork.
-    void charge(double work, const Token& at) {
+    void charge(double work, std::size_t line, std::size_t column) {
         work_ += work;
         if (work_ > kMaxExpressionWork) {
-            throw ResourceLimit("line " + std::to_string(at.line) + ", column " +
-                                std::to_string(at.column) +
-                                ": the expression would take more than " +
+            throw ResourceLimit("line " + std::to_string(line) + ", column " +
+                                std::to_string(column) + ": the expression would take more than " +
                                 std::to_string(static_cast<long>(kMaxExpressionWork)) +
                                 " limb products to expand (the limit)");
         }
@@ -263,7 +251,7 @@ class InfixParser {
     // The summands are added pairwise, as in merge sort: adding them left to right merged the
     // whole partial sum at every '+', quadratic in the terms (a 60 000-term line took 22 s).
     Value sum() {
-        const Token start = token_;
+        const std::size_t start_line = token_.line, start_column = token_.column;
         std::vector<Value> summands;
         summands.push_back(product());
         while (is_symbol('+') || is_symbol('-')) {
@@ -276,7 +264,7 @@ class InfixParser {
             std::vector<Value> halved;
             halved.reserve((summands.size() + 1) / 2);
             for (std::size_t i = 0; i + 1 < summands.size(); i += 2) {
-                charge(sum_work(summands[i], summands[i + 1]), start);
+                charge(sum_work(summands[i], summands[i + 1]), start_line, start_column);
                 halved.push_back(summands[i] + summands[i + 1]);
             }
             if (summands.size() % 2 == 1) {
@@ -295,10 +283,10 @@ class InfixParser {
             const Token divisor_start = token_;
             Value q = unary();
             if (op.text == "*") {
-                charge(product_work(p, q), op);
+                charge(product_work(p, q), op.line, op.column);
                 p = guarded(op, [&] { return p * q; });
             } else {
-                charge(quotient_work(p, q), op);
+                charge(quotient_work(p, q), op.line, op.column);
                 p = divide(p, q, divisor_start);
             }
         }
@@ -339,22 +327,21 @@ class InfixParser {
         if (is_symbol('^')) {
             fail("no second '^' (write (a^b)^c)");
         }
-        try {
-            Value result = base.pow(k);
-            charge(power_work(result), op);
-            return result;
-        } catch (const ExponentOverflow&) {
-            throw ParseError(exponent_token.line, exponent_token.column,
-                             "an exponent of at most " + std::to_string(limit),
-                             "'" + digits + "' (the power overflows)");
-        } catch (const ResourceLimit& refused) {
-            if (work_ > kMaxExpressionWork) {
-                throw;  // charge() named the place already
+        // Refusals inside pow() point at the power; its work counts once it is done.
+        Value result = [&] {
+            try {
+                return base.pow(k);
+            } catch (const ExponentOverflow&) {
+                throw ParseError(exponent_token.line, exponent_token.column,
+                                 "an exponent of at most " + std::to_string(limit),
+                                 "'" + digits + "' (the power overflows)");
+            } catch (const ResourceLimit& refused) {
+                throw ResourceLimit("line " + std::to_string(op.line) + ", column " +
+                                    std::to_string(op.column) + ": " + refused.what());
             }
-            // Still exit 5, but pointing at the power that was refused.
-            throw ResourceLimit("line " + std::to_string(op.line) + ", column " +
-                                std::to_string(op.column) + ": " + refused.what());
-        }
+        }();
+        charge(power_work(result), op.line, op.column);
+        return result;
     }
 
     Value atom() {
@@ -482,7 +469,7 @@ class InfixParser {
         auto times = [&](const Polynomial& a, const Polynomial& b) {
             charge(multiplication_work(re, a) + multiplication_work(im, b) +
                        multiplication_work(re, b) + multiplication_work(im, a),
-                   token_);
+                   token_.line, token_.column);
             // (re + i·im)·(a + i·b)
             Polynomial next_re = re * a - im * b;
             im = re * b + im * a;

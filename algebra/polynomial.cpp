@@ -292,6 +292,15 @@ Polynomial operator*(const Polynomial& a, const Polynomial& b) {
     return r;
 }
 
+double Polynomial::widest_coefficient_bits() const {
+    double widest = 0.0;
+    for (const Rational& c : coefficients_) {
+        widest = std::max(
+            widest, static_cast<double>(fmpz_bits(c.numerator()) + fmpz_bits(c.denominator())));
+    }
+    return widest;
+}
+
 Polynomial Polynomial::pow(unsigned exponent) const {
     if (exponent > 1 && num_terms() > 1) {
         // Terms of p^j: at most C(n + j − 1, j) for n terms, and at most Π (j·deg_v + 1).
@@ -320,14 +329,11 @@ Polynomial Polynomial::pow(unsigned exponent) const {
         // denominator). Counting a product as one unit per 64-bit limb of the wider half keeps
         // the bound in seconds whether the work is in the count ((1+s^2+t^2)^555: 1.5e9
         // products) or in the width ((1-t)^3015: 2.3e6 products of 1500-bit numbers, 5 s).
-        double widest_bits = 0.0;
-        for (const Rational& c : coefficients_) {
-            widest_bits = std::max(widest_bits, static_cast<double>(fmpz_bits(c.numerator()) +
-                                                                    fmpz_bits(c.denominator())));
-        }
         const unsigned upper_half = exponent - exponent / 2;
         const double limbs_per_product =
-            1.0 + upper_half * (std::log2(static_cast<double>(num_terms())) + widest_bits) / 64.0;
+            1.0 + upper_half *
+                      (std::log2(static_cast<double>(num_terms())) + widest_coefficient_bits()) /
+                      64.0;
         if (terms_bound(upper_half) * terms_bound(exponent / 2) * limbs_per_product >
             kMaxPowerWork) {
             throw ResourceLimit(what + " would take more than " +

@@ -39,6 +39,9 @@ class Polynomial {
     std::size_t num_terms() const { return coefficients_.size(); }
     bool is_zero() const { return coefficients_.empty(); }
     bool is_constant() const;  // zero included
+    // Bits of the widest coefficient, numerator and denominator together (0 for zero): what
+    // the work bounds of powers and parsed expressions weigh a term product by.
+    double widest_coefficient_bits() const;
     bool is_canonical() const;
 
     const Rational& coefficient(std::size_t i) const { return coefficients_[i]; }
