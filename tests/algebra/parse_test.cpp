@@ -75,8 +75,9 @@ TEST(Parse, ExpressionWorkIsBoundedAsAWhole) {
         parse_polynomial(chain, st);
     } catch (const ResourceLimit& e) {
         // The step that crosses the budget: the first product, its '*' at column 10.
-        EXPECT_NE(std::string(e.what()).find("line 1, column 10: the expression would take more "
-                                             "than 10000000 limb products"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "line 1, column 10: the expression would take more than " +
+                      std::to_string(static_cast<long>(kMaxPowerWork)) + " limb products"),
                   std::string::npos)
             << e.what();
     }
