@@ -147,6 +147,9 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
             }
             scene = render::parse_scene(read_input(args.input), scene_surface_compiler(deadline),
                                         method);
+            for (const std::string& note : scene.notes) {
+                std::fprintf(stderr, "locus: %s: %s\n", args.input.c_str(), note.c_str());
+            }
         } catch (const Timeout&) {
             throw;  // an implicitization ran past --timeout: not a fault of the file
         } catch (const Error& e) {

@@ -11,21 +11,11 @@
 #include "algebra/compiled.h"
 #include "render/camera.h"
 #include "render/clip_region.h"
+#include "render/material.h"
 #include "render/sdf/node.h"
 #include "render/trace_method.h"
 
 namespace locus::render {
-
-// Blinn–Phong, two-sided: the side where f > 0 ("outside", the normal ∇f points there) and the
-// side where f < 0 ("inside") have their own colours, as in surf and SURFER.
-struct Material {
-    Vec3 outside{0.95, 0.62, 0.22};
-    Vec3 inside{0.30, 0.52, 0.90};
-    double ambient = 0.15;
-    double diffuse = 0.75;
-    double specular = 0.35;
-    double shininess = 48.0;
-};
 
 struct Light {
     enum class Kind { directional, point } kind = Kind::directional;
@@ -67,6 +57,9 @@ struct Scene {
     // rendered by render_sdf_scene, with the surfaces above as exactly traced leaves.
     std::vector<sdf::NodePtr> objects;
     RenderOptions options;
+    // What the scene reader accepted but the user should change (a deprecated key), each
+    // naming its position and key; the command line prints them on stderr.
+    std::vector<std::string> notes;
 };
 
 // Where an algebraic leaf of the scene tree comes from; `key` names it in errors

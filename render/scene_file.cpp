@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "render/detail/material_keys.h"
 #include "render/detail/toml_reader.h"
 #include "render/sdf/node_reader.h"
 
@@ -12,20 +13,8 @@ namespace {
 using detail::position;
 using detail::TableReader;
 
-Material read_material(const toml::table& table, const std::string& path) {
-    TableReader r(table, path);
-    Material m;
-    m.outside = r.vector("outside", m.outside);
-    m.inside = r.vector("inside", m.inside);
-    m.ambient = r.non_negative("ambient", m.ambient);
-    m.diffuse = r.non_negative("diffuse", m.diffuse);
-    m.specular = r.non_negative("specular", m.specular);
-    m.shininess = r.number("shininess", m.shininess, true);
-    r.finish();
-    return m;
-}
-
-Surface read_surface(const toml::table& table, const std::string& path) {
+Surface read_surface(const toml::table& table, const std::string& path,
+                     std::vector<std::string>& notes) {
     TableReader r(table, path);
     Surface s;
     const std::optional<std::string> equation = r.text("equation");
@@ -58,7 +47,9 @@ Surface read_surface(const toml::table& table, const std::string& path) {
                          "expected \"sphere\" or \"box\", found \"" + shape + "\"");
     }
     if (const toml::table* material = r.subtable("material")) {
-        s.material = read_material(*material, path + "material.");
+        TableReader m(*material, path + "material.");
+        s.material = detail::read_material_keys(m, s.material, notes);
+        m.finish();
     }
     r.finish();
     return s;
@@ -136,7 +127,8 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
     if (const toml::array* surfaces = r.array_of_tables("surface")) {
         for (std::size_t i = 0; i < surfaces->size(); ++i) {
             scene.surfaces.push_back(read_surface(*(*surfaces)[i].as_table(),
-                                                  "surface[" + std::to_string(i + 1) + "]."));
+                                                  "surface[" + std::to_string(i + 1) + "].",
+                                                  scene.notes));
         }
     }
     if (const toml::table* options = r.subtable("render")) {
@@ -156,7 +148,8 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
     }
     const toml::table* materials = r.subtable("materials");
     if (const toml::array* objects = r.array_of_tables("object")) {
-        scene.objects = sdf::read_objects(*objects, materials, compile, scene.options.method);
+        scene.objects =
+            sdf::read_objects(*objects, materials, compile, scene.options.method, scene.notes);
     } else if (materials != nullptr) {
         throw InputError(position(*root.get("materials")) + ": materials",
                          "named materials are for [[object]] trees; this scene has none");

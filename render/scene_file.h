@@ -8,7 +8,8 @@
 //     equation = "x^2+y^2+z^2-1"                        # or param = "torus.param"
 //     clip = "sphere"  clip_radius = 2  clip_center = [0, 0, 0]
 //                                                       # or clip = "box", clip_min, clip_max
-//     [surface.material] outside = [...]  inside = [...]  ambient  diffuse  specular  shininess
+//     [surface.material] color = [...]  inside = [...]  ambient  diffuse  specular  shininess
+//                        checker = [...]  checker_size     (render/detail/material_keys.h)
 //     [render]   method = "sturm"  samples = 2  shadows = true  ambient_occlusion = false
 //                threads = 0
 //
@@ -18,7 +19,7 @@
 // Every error names the key (as a dotted path) and its position: a TOML syntax error is a
 // ParseError with line and column; an unknown key, a value of the wrong type or out of range
 // is an InputError such as "line 4, column 1: surface[1].clip_radius: expected a positive
-// number, found -2".
+// number, found -2". A deprecated key that is still read leaves a note in Scene::notes.
 #pragma once
 
 #include <string_view>

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/blinn_phong.h"
+
 namespace locus::render {
 
 namespace {
@@ -108,75 +110,25 @@ double Shader::ambient_occlusion(const Vec3& point, const Vec3& normal, std::uin
     return static_cast<double>(open) / samples;
 }
 
-namespace {
-
-// x^e, by squaring when the Blinn–Phong exponent is a whole number (the default 48 is):
-// std::pow was 3 % of a degree-6 frame, two calls per hit.
-double specular_power(double x, double e) {
-    if (e >= 0.0 && e <= 1024.0 && e == std::floor(e)) {
-        auto n = static_cast<unsigned>(e);
-        double result = 1.0;
-        double square = x;
-        while (n != 0) {
-            if ((n & 1u) != 0) {
-                result *= square;
-            }
-            square *= square;
-            n >>= 1u;
-        }
-        return result;
-    }
-    return std::pow(x, e);
-}
-
-}  // namespace
-
 ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed) const {
     const ShadedSurface& surface = surfaces_[index];
     const Vec3 point = ray.at(t);
     const Vec3 view = -glm::normalize(ray.direction);
-    Vec3 normal = to_vec(surface.tracer->polynomial().gradient(to_point(point)));
-    const double length = glm::length(normal);
-    bool outside = true;
-    if (length > 0.0 && std::isfinite(length)) {
-        normal /= length;
-        if (glm::dot(normal, view) < 0.0) {
-            normal = -normal;
-            outside = false;
-        }
-    } else {
-        normal = view;
-    }
-    const Material& m = surface.material;
-    const Vec3 base = outside ? m.outside : m.inside;
+    const FacingSide side =
+        facing_side(to_vec(surface.tracer->polynomial().gradient(to_point(point))), view);
+    // A pattern is decided just inside the surface (against the outward normal), the same
+    // for every pixel of a flat cell boundary.
+    const Vec3 outward = side.outside ? side.normal : -side.normal;
+    const Material material = surface.material.at(point - (1e-6 * scale_) * outward);
     ShadingResult result;
-    double ambient = m.ambient;
-    if (options_.ambient_occlusion) {
-        ambient *= ambient_occlusion(point, normal, seed, result.work);
-    }
-    Vec3 color = ambient * base;
-    for (const Light& light : lights_) {
-        const Vec3 to_light = light.kind == Light::Kind::directional
-                                  ? light.direction
-                                  : glm::normalize(light.position - point);
-        const double cosine = glm::dot(normal, to_light);
-        if (cosine <= 0.0) {
-            continue;
-        }
-        double visible = 1.0;
-        if (options_.shadows) {
-            visible = visibility(point, normal, light, seed, result.work);
-            if (visible == 0.0) {
-                continue;
-            }
-        }
-        const Vec3 half = glm::normalize(to_light + view);
-        const double highlight = specular_power(std::max(0.0, glm::dot(normal, half)), m.shininess);
-        color += (visible * light.intensity) * light.color *
-                 (m.diffuse * cosine * base + m.specular * highlight * Vec3(1.0));
-    }
-    result.color = color;
-    result.normal = normal;
+    const double ambient_factor =
+        options_.ambient_occlusion ? ambient_occlusion(point, side.normal, seed, result.work) : 1.0;
+    auto visibility = [&](const Light& light, const Vec3&, double) {
+        return options_.shadows ? this->visibility(point, side.normal, light, seed, result.work)
+                                : 1.0;
+    };
+    result.color = blinn_phong(material, side, point, view, lights_, ambient_factor, visibility);
+    result.normal = side.normal;
     return result;
 }
 

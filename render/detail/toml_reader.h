@@ -46,6 +46,9 @@ class TableReader {
     TableReader(const toml::table& table, std::string path)
         : table_(table), path_(std::move(path)) {}
 
+    // The dotted path of the table's keys ("surface[1].material.").
+    const std::string& path() const { return path_; }
+
     [[noreturn]] void fail(const toml::node& node, const std::string& key,
                            const std::string& expected) const {
         throw InputError(position(node) + ": " + path_ + key,

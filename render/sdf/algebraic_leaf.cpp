@@ -43,7 +43,7 @@ class AlgebraicLeaf final : public Node {
             length > 0.0 ? vg.value / length : std::copysign(INFINITY, vg.value);
         return std::max(clip_distance(clip_, p), estimate);
     }
-    Look look(const Vec3& p) const override { return material_->at(p); }
+    Material material_at(const Vec3& p) const override { return material_->at(p); }
     Vec3 gradient(const Vec3& p, double) const override {
         return to_vec(f_->value_gradient(to_point(p)).gradient);
     }
@@ -70,17 +70,6 @@ class AlgebraicLeaf final : public Node {
 NodePtr make_algebraic(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
                        MaterialPtr material, TraceMethod method) {
     return std::make_shared<AlgebraicLeaf>(std::move(f), clip, std::move(material), method);
-}
-
-MaterialPtr node_material(const Material& material) {
-    auto m = std::make_shared<NodeMaterial>();
-    m->look.color = material.outside;
-    m->look.inside = material.inside;
-    m->look.ambient = material.ambient;
-    m->look.diffuse = material.diffuse;
-    m->look.specular = material.specular;
-    m->look.shininess = material.shininess;
-    return m;
 }
 
 }  // namespace locus::render::sdf

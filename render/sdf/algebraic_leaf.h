@@ -20,9 +20,6 @@ namespace locus::render::sdf {
 NodePtr make_algebraic(std::shared_ptr<const algebra::CompiledPolynomial> f, const ClipRegion& clip,
                        MaterialPtr material, TraceMethod method);
 
-// The renderer's two-sided Material (outside and inside colours) as a node material.
-MaterialPtr node_material(const Material& material);
-
 // The signed distance to the clip region (exact for a sphere and a box).
 double clip_distance(const ClipRegion& clip, const Vec3& p);
 

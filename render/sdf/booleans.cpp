@@ -77,10 +77,10 @@ class Boolean final : public Node {
 
     double value(const Vec3& p) const override { return fold(p, nullptr); }
 
-    Look look(const Vec3& p) const override {
-        Look look;
-        fold(p, &look);
-        return look;
+    Material material_at(const Vec3& p) const override {
+        Material material;
+        fold(p, &material);
+        return material;
     }
 
     std::string_view type() const override {
@@ -95,11 +95,12 @@ class Boolean final : public Node {
     }
 
   private:
-    // The folded value; with `look`, also the folded look (mixed by the blend weights).
-    double fold(const Vec3& p, Look* look) const {
+    // The folded value; with `material`, also the folded material (mixed by the blend
+    // weights).
+    double fold(const Vec3& p, Material* material) const {
         double acc = children_[0]->value(p) * inverse_lipschitz_[0];
-        if (look != nullptr) {
-            *look = children_[0]->look(p);
+        if (material != nullptr) {
+            *material = children_[0]->material_at(p);
         }
         for (std::size_t i = 1; i < children_.size(); ++i) {
             const double c = children_[i]->value(p) * inverse_lipschitz_[i];
@@ -137,8 +138,8 @@ class Boolean final : public Node {
                 }
                 weight = b.weight_of_b;
             }
-            if (look != nullptr && weight > 0.0) {
-                *look = mix(*look, children_[i]->look(p), weight);
+            if (material != nullptr && weight > 0.0) {
+                *material = mix(*material, children_[i]->material_at(p), weight);
             }
         }
         return acc;

@@ -71,7 +71,7 @@ class Warp final : public Unary {
         }
         return std::max(child_->value(warped(q)) * scale_, r - radius_);
     }
-    Look look(const Vec3& p) const override { return child_->look(warped(p)); }
+    Material material_at(const Vec3& p) const override { return child_->material_at(warped(p)); }
     std::string_view type() const override { return warp_ == Kind::twist ? "twist" : "bend"; }
 
   private:
@@ -108,7 +108,7 @@ class Round final : public Unary {
         return at_least_box_distance(child_->value(p) * inverse_lipschitz_, child_box_, p) -
                radius_;
     }
-    Look look(const Vec3& p) const override { return child_->look(p); }
+    Material material_at(const Vec3& p) const override { return child_->material_at(p); }
     std::string_view type() const override { return "round"; }
 
   private:
@@ -123,7 +123,7 @@ class Elongate final : public Unary {
         bounds_ = {bounds_.min - half, bounds_.max + half};
     }
     double value(const Vec3& p) const override { return child_->value(squeezed(p)); }
-    Look look(const Vec3& p) const override { return child_->look(squeezed(p)); }
+    Material material_at(const Vec3& p) const override { return child_->material_at(squeezed(p)); }
     std::string_view type() const override { return "elongate"; }
 
   private:
@@ -146,7 +146,7 @@ class Displace final : public Unary {
         return at_least_box_distance(child_->value(p) * inverse_lipschitz_, child_box_, p) +
                noise_.value(p);
     }
-    Look look(const Vec3& p) const override { return child_->look(p); }
+    Material material_at(const Vec3& p) const override { return child_->material_at(p); }
     std::string_view type() const override { return "displace"; }
 
   private:

@@ -25,7 +25,7 @@ class MirrorAxes final : public Node {
         }
     }
     double value(const Vec3& p) const override { return child_->value(folded(p)); }
-    Look look(const Vec3& p) const override { return child_->look(folded(p)); }
+    Material material_at(const Vec3& p) const override { return child_->material_at(folded(p)); }
     std::string_view type() const override { return "mirror"; }
 
   private:
@@ -61,7 +61,7 @@ class MirrorPlane final : public Node {
         }
     }
     double value(const Vec3& p) const override { return child_->value(folded(p)); }
-    Look look(const Vec3& p) const override { return child_->look(folded(p)); }
+    Material material_at(const Vec3& p) const override { return child_->material_at(folded(p)); }
     std::string_view type() const override { return "mirror_plane"; }
 
   private:
@@ -112,7 +112,7 @@ class Repeat final : public Node {
               [&](const Vec3& q) { best = std::min(best, child_->value(q) * inverse_lipschitz_); });
         return best;
     }
-    Look look(const Vec3& p) const override {
+    Material material_at(const Vec3& p) const override {
         double best = INFINITY;
         Vec3 nearest = p;
         visit(p, [&](const Vec3& q) {
@@ -122,7 +122,7 @@ class Repeat final : public Node {
                 nearest = q;
             }
         });
-        return child_->look(nearest);
+        return child_->material_at(nearest);
     }
     std::string_view type() const override { return "repeat"; }
 

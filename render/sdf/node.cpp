@@ -64,34 +64,6 @@ Bounds Bounds::grown(double margin) const {
     return {min - Vec3(margin), max + Vec3(margin)};
 }
 
-Look mix(const Look& a, const Look& b, double w) {
-    Look m;
-    m.color = a.color + w * (b.color - a.color);
-    m.inside = a.inside + w * (b.inside - a.inside);
-    m.ambient = a.ambient + w * (b.ambient - a.ambient);
-    m.diffuse = a.diffuse + w * (b.diffuse - a.diffuse);
-    m.specular = a.specular + w * (b.specular - a.specular);
-    m.shininess = a.shininess + w * (b.shininess - a.shininess);
-    return m;
-}
-
-Look NodeMaterial::at(const Vec3& p) const {
-    if (!checker) {
-        return look;
-    }
-    // The shader asks just inside the surface, so a floor lying on a cell boundary (y = 0)
-    // gets one layer of cells, not a rounding-dependent mix of two.
-    const Vec3 cell = glm::floor(p / checker_size);
-    const auto parity = static_cast<long long>(cell.x + cell.y + cell.z);
-    if (parity % 2 == 0) {
-        return look;
-    }
-    Look other = look;
-    other.color = checker_color;
-    other.inside = checker_color;
-    return other;
-}
-
 Vec3 Node::gradient(const Vec3& p, double h) const {
     // Four samples on a tetrahedron (one fewer than central differences on the axes).
     const Vec3 a{1, -1, -1}, b{-1, -1, 1}, c{-1, 1, -1}, d{1, 1, 1};

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "render/material.h"
 #include "render/root_finder.h"
 #include "render/vec3.h"
 
@@ -45,29 +46,9 @@ struct Bounds {
     Bounds grown(double margin) const;
 };
 
-// How a surface point looks: Blinn–Phong parameters, mixed linearly across smooth blends.
-// `inside` is the colour of the side where f < 0 faces the viewer (algebraic surfaces are
-// two-sided as in the renderer; closed solids never show it).
-struct Look {
-    Vec3 color{0.8, 0.8, 0.8};
-    Vec3 inside{0.8, 0.8, 0.8};
-    double ambient = 0.15;
-    double diffuse = 0.75;
-    double specular = 0.35;
-    double shininess = 48.0;
-};
-Look mix(const Look& a, const Look& b, double weight_of_b);
-
-// A named material of a scene file; `checker` alternates two colours on cubes of
-// `checker_size` in the leaf's own coordinates (the seed's checkered floor).
-struct NodeMaterial {
-    Look look;
-    bool checker = false;
-    Vec3 checker_color{0.2, 0.2, 0.2};
-    double checker_size = 1.0;
-    Look at(const Vec3& local_point) const;
-};
-using MaterialPtr = std::shared_ptr<const NodeMaterial>;
+// A node's material, shared by the leaves below the operation or name that gave it. Patterns
+// (a checker) are resolved in the leaf's own coordinates.
+using MaterialPtr = std::shared_ptr<const Material>;
 
 class Node;
 using NodePtr = std::shared_ptr<const Node>;
@@ -78,9 +59,9 @@ class Node {
 
     // The field value at p.
     virtual double value(const Vec3& p) const = 0;
-    // The look of the surface near p (the child that wins a boolean, a blend of both in a
-    // smooth one).
-    virtual Look look(const Vec3& p) const = 0;
+    // The resolved material of the surface near p (the child that wins a boolean, a blend of
+    // both in a smooth one).
+    virtual Material material_at(const Vec3& p) const = 0;
     // ∇f at p; by tetrahedral central differences of step h unless a node knows better
     // (transforms rotate their child's gradient; algebraic leaves use the analytic one).
     virtual Vec3 gradient(const Vec3& p, double h) const;

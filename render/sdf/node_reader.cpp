@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "render/detail/material_keys.h"
 #include "render/detail/toml_reader.h"
 #include "render/sdf/algebraic_leaf.h"
 #include "render/sdf/booleans.h"
@@ -24,7 +25,8 @@ constexpr std::string_view kNodeTypes =
 
 class Reader {
   public:
-    Reader(const toml::table* materials, const SurfaceCompiler& compile, TraceMethod method)
+    Reader(const toml::table* materials, const SurfaceCompiler& compile, TraceMethod method,
+           std::vector<std::string>& notes)
         : compile_(compile), method_(method) {
         if (materials == nullptr) {
             return;
@@ -35,7 +37,10 @@ class Reader {
                 throw InputError(position(node) + ": materials." + name,
                                  "expected a table ([materials." + name + "])");
             }
-            materials_[name] = read_material(*node.as_table(), "materials." + name + ".");
+            TableReader r(*node.as_table(), "materials." + name + ".");
+            materials_[name] =
+                std::make_shared<const Material>(detail::read_material_keys(r, Material{}, notes));
+            r.finish();
         }
     }
 
@@ -79,25 +84,6 @@ class Reader {
     }
 
   private:
-    MaterialPtr read_material(const toml::table& table, const std::string& path) {
-        TableReader r(table, path);
-        auto m = std::make_shared<NodeMaterial>();
-        Look& look = m->look;
-        look.color = r.vector("color", look.color);
-        look.inside = r.vector("inside", look.color);
-        look.ambient = r.non_negative("ambient", look.ambient);
-        look.diffuse = r.non_negative("diffuse", look.diffuse);
-        look.specular = r.non_negative("specular", look.specular);
-        look.shininess = r.number("shininess", look.shininess, true);
-        if (r.find("checker") != nullptr) {
-            m->checker = true;
-            m->checker_color = r.vector("checker", m->checker_color);
-        }
-        m->checker_size = r.number("checker_size", m->checker_size, true);
-        r.finish();
-        return m;
-    }
-
     std::vector<NodePtr> children(TableReader& r, const toml::table& table, const std::string& path,
                                   const MaterialPtr& material) {
         const toml::array* list = r.array_of_tables("children");
@@ -169,9 +155,9 @@ class Reader {
             throw InputError(source.key, "algebraic leaves need a surface compiler");
         }
         auto compiled = std::make_shared<const algebra::CompiledPolynomial>(compile_(source));
-        // Without a material, the renderer's two-sided default (orange outside, blue inside).
+        // Without a material, the two-sided default (orange outside, blue inside).
         return make_algebraic(std::move(compiled), region,
-                              material ? material : node_material(Material{}), method_);
+                              material ? material : std::make_shared<const Material>(), method_);
     }
 
     NodePtr shape(const std::string& type, TableReader& r, const toml::table& table,
@@ -341,9 +327,7 @@ class Reader {
 
     static MaterialPtr default_material() {
         static const MaterialPtr material = [] {
-            auto m = std::make_shared<NodeMaterial>();
-            m->look.color = m->look.inside = {0.75, 0.75, 0.78};
-            return m;
+            return std::make_shared<const Material>(Material::plain({0.75, 0.75, 0.78}));
         }();
         return material;
     }
@@ -356,8 +340,9 @@ class Reader {
 }  // namespace
 
 std::vector<NodePtr> read_objects(const toml::array& objects, const toml::table* materials,
-                                  const SurfaceCompiler& compile, TraceMethod method) {
-    Reader reader(materials, compile, method);
+                                  const SurfaceCompiler& compile, TraceMethod method,
+                                  std::vector<std::string>& notes) {
+    Reader reader(materials, compile, method, notes);
     std::vector<NodePtr> nodes;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         nodes.push_back(

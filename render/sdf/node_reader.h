@@ -14,7 +14,9 @@ namespace locus::render::sdf {
 
 // Every error is an InputError naming the position and the key path, such as
 // "line 12, column 1: object[2].children[1].type: unknown node type \"sphre\" (expected ...)".
+// Deprecated keys that were still read are appended to `notes`.
 std::vector<NodePtr> read_objects(const toml::array& objects, const toml::table* materials,
-                                  const SurfaceCompiler& compile, TraceMethod method);
+                                  const SurfaceCompiler& compile, TraceMethod method,
+                                  std::vector<std::string>& notes);
 
 }  // namespace locus::render::sdf

@@ -17,7 +17,7 @@ double dot2(double x, double y) {
 class Leaf : public Node {
   public:
     explicit Leaf(MaterialPtr material) : material_(std::move(material)) {}
-    Look look(const Vec3& p) const override { return material_->at(p); }
+    Material material_at(const Vec3& p) const override { return material_->at(p); }
 
   protected:
     MaterialPtr material_;

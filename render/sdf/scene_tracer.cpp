@@ -321,8 +321,8 @@ Vec3 SceneTracer::normal(int item, const Vec3& p, double h) const {
     return items_[static_cast<std::size_t>(item)].node->gradient(p, h);
 }
 
-Look SceneTracer::look(int item, const Vec3& p) const {
-    return items_[static_cast<std::size_t>(item)].node->look(p);
+Material SceneTracer::material_at(int item, const Vec3& p) const {
+    return items_[static_cast<std::size_t>(item)].node->material_at(p);
 }
 
 }  // namespace locus::render::sdf

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "render/blinn_phong.h"
 #include "render/detail/image_rows.h"
 #include "render/sdf/algebraic_leaf.h"
 
@@ -14,7 +15,7 @@ std::vector<sdf::NodePtr> scene_items(const Scene& scene,
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         items.push_back(sdf::make_algebraic(
             std::make_shared<const algebra::CompiledPolynomial>(surfaces[i]),
-            scene.surfaces[i].clip, sdf::node_material(scene.surfaces[i].material),
+            scene.surfaces[i].clip, std::make_shared<const Material>(scene.surfaces[i].material),
             scene.options.method));
     }
     return items;
@@ -33,62 +34,31 @@ class SdfShader {
                sdf::TraceCounters& counters) const {
         const Vec3 point = ray.at(hit.t);
         const Vec3 view = -ray.direction;
-        Vec3 n = tracer_.normal(hit.item, point, std::max(epsilon, 1e-7 * tracer_.scale()));
-        const double length = glm::length(n);
-        bool outside = true;
-        if (length > 0.0 && std::isfinite(length)) {
-            n /= length;
-            if (glm::dot(n, view) < 0.0) {
-                n = -n;
-                outside = false;
+        const FacingSide side = facing_side(
+            tracer_.normal(hit.item, point, std::max(epsilon, 1e-7 * tracer_.scale())), view);
+        normal = side.normal;
+        // The material just inside the surface (against the outward normal), where patterns
+        // such as a checker are decided the same way for every pixel of a flat floor.
+        const Vec3 outward = side.outside ? side.normal : -side.normal;
+        const Material material =
+            tracer_.material_at(hit.item, point - (epsilon + 1e-6 * tracer_.scale()) * outward);
+        const double ambient_factor =
+            options_.ambient_occlusion ? occlusion(point, side.normal, counters) : 1.0;
+        const Vec3 origin = point + (4.0 * epsilon + 1e-6 * tracer_.scale()) * side.normal;
+        auto visibility = [&](const Light& light, const Vec3& to_light, double distance) {
+            if (!options_.shadows) {
+                return 1.0;
             }
-        } else {
-            n = view;
-        }
-        normal = n;
-        // The look just inside the surface (against the outward normal), where patterns such
-        // as a checker are decided the same way for every pixel of a flat floor.
-        const Vec3 outward = outside ? n : -n;
-        const sdf::Look look =
-            tracer_.look(hit.item, point - (epsilon + 1e-6 * tracer_.scale()) * outward);
-        const Vec3 base = outside ? look.color : look.inside;
-        double ambient = look.ambient;
-        if (options_.ambient_occlusion) {
-            ambient *= occlusion(point, n, counters);
-        }
-        Vec3 color = ambient * base;
-        const Vec3 origin = point + (4.0 * epsilon + 1e-6 * tracer_.scale()) * n;
-        for (const Light& light : lights_) {
-            Vec3 to_light = light.direction;
-            double distance = far_;
-            if (light.kind == Light::Kind::point) {
-                to_light = light.position - point;
-                distance = glm::length(to_light);
-                to_light /= distance;
+            double penumbra = 0.0;
+            if (light.radius > 0.0) {
+                penumbra = light.kind == Light::Kind::point
+                               ? distance / light.radius
+                               : 1.0 / std::tan(std::min(light.radius, 1.5));
             }
-            const double cosine = glm::dot(n, to_light);
-            if (cosine <= 0.0) {
-                continue;
-            }
-            double visible = 1.0;
-            if (options_.shadows) {
-                double penumbra = 0.0;
-                if (light.radius > 0.0) {
-                    penumbra = light.kind == Light::Kind::point
-                                   ? distance / light.radius
-                                   : 1.0 / std::tan(std::min(light.radius, 1.5));
-                }
-                visible = tracer_.transmittance({origin, to_light}, distance, penumbra, counters);
-                if (visible <= 0.0) {
-                    continue;
-                }
-            }
-            const Vec3 half = glm::normalize(to_light + view);
-            const double highlight = std::pow(std::max(0.0, glm::dot(n, half)), look.shininess);
-            color += (visible * light.intensity) * light.color *
-                     (look.diffuse * cosine * base + look.specular * highlight * Vec3(1.0));
-        }
-        return color;
+            return tracer_.transmittance({origin, to_light}, std::min(distance, far_), penumbra,
+                                         counters);
+        };
+        return blinn_phong(material, side, point, view, lights_, ambient_factor, visibility);
     }
 
   private:

@@ -1,5 +1,5 @@
 // Rendering a scene with an SDF tree (Scene::objects): primary rays through the SceneTracer,
-// Blinn–Phong shading with the looks of the nodes (mixed across smooth blends), hard or soft
+// Blinn–Phong shading with the materials of the nodes (mixed across smooth blends), hard or soft
 // shadows (a light's radius sets the penumbra of sphere-traced occluders; exactly traced
 // surfaces cast hard shadows), ambient occlusion from the field along the normal (Quilez),
 // k×k supersampling, rows over oneTBB.

@@ -6,6 +6,7 @@
 
 #include "algebra/error.h"
 #include "render/camera.h"
+#include "render/material.h"
 
 namespace locus::render {
 namespace {
@@ -51,7 +52,7 @@ clip = "box"
 clip_min = [-2, -2, -1]
 clip_max = [2, 2, 1]
 [surface.material]
-outside = [1, 0, 0]
+color = [1, 0, 0]
 shininess = 10
 [render]
 method = "bernstein"
@@ -69,13 +70,77 @@ threads = 2
     EXPECT_EQ(scene.lights[0].radius, 0.2);
     ASSERT_TRUE(std::holds_alternative<ClipBox>(scene.surfaces[0].clip));
     EXPECT_EQ(std::get<ClipBox>(scene.surfaces[0].clip).max.z, 1.0);
-    EXPECT_EQ(scene.surfaces[0].material.outside, Vec3(1, 0, 0));
+    EXPECT_EQ(scene.surfaces[0].material.color, Vec3(1, 0, 0));
+    EXPECT_EQ(scene.surfaces[0].material.inside, Vec3(1, 0, 0));  // one colour given: one colour
+    EXPECT_TRUE(scene.notes.empty());
     EXPECT_EQ(scene.surfaces[0].material.shininess, 10.0);
     EXPECT_EQ(scene.options.method, TraceMethod::bernstein);
     EXPECT_EQ(scene.options.samples, 3);
     EXPECT_FALSE(scene.options.shadows);
     EXPECT_TRUE(scene.options.ambient_occlusion);
     EXPECT_EQ(scene.options.threads, 2);
+}
+
+// Both scene forms read their materials through one set of keys with one set of defaults:
+// a [[surface]] material and a named [materials.NAME] accept the same keys, `outside` (the old
+// [[surface]] name of `color`) is still read with a note, and a checker works in both.
+TEST(SceneFile, MaterialsShareOneVocabulary) {
+    const Scene old_key = parse_scene(
+        "[[surface]]\nequation = \"x^2+y^2+z^2-1\"\n[surface.material]\noutside = [1, 0, 0]\n");
+    EXPECT_EQ(old_key.surfaces[0].material.color, Vec3(1, 0, 0));
+    ASSERT_EQ(old_key.notes.size(), 1u);
+    EXPECT_EQ(old_key.notes[0],
+              "line 4, column 11: surface[1].material.outside: deprecated, read "
+              "as 'color' (the name in every scene form)");
+    EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\n[surface.material]\ncolor = [1, 0, "
+                       "0]\noutside = [0, 1, 0]\n"),
+              "line 5, column 11: surface[1].material.outside: 'outside' is the old name of "
+              "'color'; give only 'color'");
+
+    // Without colours, a material keeps the two-sided default; `inside` alone keeps `color`.
+    const Scene surface = parse_scene(
+        "[[surface]]\nequation = \"x^2+y^2+z^2-1\"\n"
+        "[surface.material]\ninside = [0, 0, 1]\nchecker = [0, 1, "
+        "0]\nchecker_size = 0.5\n");
+    const Material& m = surface.surfaces[0].material;
+    EXPECT_EQ(m.color, Material{}.color);
+    EXPECT_EQ(m.inside, Vec3(0, 0, 1));
+    ASSERT_TRUE(m.checker.has_value());
+    EXPECT_EQ(m.at({0.25, 0.25, 0.25}).color, Material{}.color);
+    EXPECT_EQ(m.at({0.75, 0.25, 0.25}).color, Vec3(0, 1, 0));
+    EXPECT_EQ(m.at({0.75, 0.25, 0.25}).inside, Vec3(0, 1, 0));
+    EXPECT_FALSE(m.at({0.75, 0.25, 0.25}).checker.has_value());
+
+    // The same keys in a named material of a scene tree; primitives without one are grey.
+    const Scene tree = parse_scene(R"(
+[materials.red]
+outside = [1, 0, 0]
+specular = 0.5
+[materials.shiny]
+specular = 0.9
+[[object]]
+type = "sphere"
+material = "red"
+[[object]]
+type = "sphere"
+material = "shiny"
+translate = [3, 0, 0]
+[[object]]
+type = "box"
+translate = [-3, 0, 0]
+)");
+    ASSERT_EQ(tree.objects.size(), 3u);
+    ASSERT_EQ(tree.notes.size(), 1u);
+    EXPECT_NE(tree.notes[0].find("materials.red.outside: deprecated"), std::string::npos);
+    const Material red = tree.objects[0]->material_at({0, 0.9, 0});
+    EXPECT_EQ(red.color, Vec3(1, 0, 0));
+    EXPECT_EQ(red.inside, Vec3(1, 0, 0));
+    EXPECT_EQ(red.specular, 0.5);
+    const Material shiny = tree.objects[1]->material_at({3, 0.9, 0});
+    EXPECT_EQ(shiny.color, Material{}.color);
+    EXPECT_EQ(shiny.inside, Material{}.inside);
+    EXPECT_EQ(shiny.specular, 0.9);
+    EXPECT_EQ(tree.objects[2]->material_at({-3, 0.9, 0}).color, Vec3(0.75, 0.75, 0.78));
 }
 
 TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {

@@ -14,9 +14,7 @@
 namespace locus::render::sdf::testing {
 
 inline MaterialPtr plain_material(Vec3 color = Vec3(0.8)) {
-    auto m = std::make_shared<NodeMaterial>();
-    m->look.color = m->look.inside = color;
-    return m;
+    return std::make_shared<const Material>(Material::plain(color));
 }
 
 inline std::vector<std::pair<std::string, NodePtr>> every_node_type() {
