@@ -1,5 +1,5 @@
 // How a surface looks: one type for the surfaces of a plain scene and for every node of an SDF
-// scene tree, read from the same scene-file keys (render/detail/material_keys.h) and shaded by
+// scene tree, read from the same scene-file keys (render/detail/surface_keys.h) and shaded by
 // one Blinn–Phong core (render/blinn_phong.h).
 #pragma once
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "render/detail/material_keys.h"
+#include "render/detail/surface_keys.h"
 #include "render/detail/toml_reader.h"
 #include "render/sdf/node_reader.h"
 
@@ -17,35 +17,12 @@ Surface read_surface(const toml::table& table, const std::string& path,
                      std::vector<std::string>& notes) {
     TableReader r(table, path);
     Surface s;
-    const std::optional<std::string> equation = r.text("equation");
-    const std::optional<std::string> param = r.text("param");
-    if (equation.has_value() == param.has_value()) {
-        throw InputError(position(table) + ": " + path.substr(0, path.size() - 1),
-                         "give exactly one of 'equation' and 'param'");
-    }
-    s.equation = equation.value_or("");
-    s.param_file = param.value_or("");
-    const toml::node* given = table.get(equation ? "equation" : "param");
-    s.source = position(*given) + ": " + path + (equation ? "equation" : "param");
-    const std::string shape = r.text("clip").value_or("sphere");
-    if (shape == "sphere") {
-        ClipSphere sphere;
-        sphere.radius = r.number("clip_radius", sphere.radius, true);
-        sphere.center = r.vector("clip_center", sphere.center);
-        s.clip = sphere;
-    } else if (shape == "box") {
-        ClipBox box;
-        box.min = r.vector("clip_min", box.min);
-        box.max = r.vector("clip_max", box.max);
-        if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) {
-            throw InputError(position(table) + ": " + path + "clip_min",
-                             "must be below clip_max in every coordinate");
-        }
-        s.clip = box;
-    } else {
-        throw InputError(position(*table.get("clip")) + ": " + path + "clip",
-                         "expected \"sphere\" or \"box\", found \"" + shape + "\"");
-    }
+    const AlgebraicSource source = detail::read_algebraic_source(r, table);
+    s.equation = source.equation;
+    s.param_file = source.param_file;
+    const char* given = source.equation.empty() ? "param" : "equation";
+    s.source = position(*table.get(given)) + ": " + path + given;
+    s.clip = detail::read_clip_region(r, table);
     if (const toml::table* material = r.subtable("material")) {
         TableReader m(*material, path + "material.");
         s.material = detail::read_material_keys(m, s.material, notes);

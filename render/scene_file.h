@@ -9,7 +9,7 @@
 //     clip = "sphere"  clip_radius = 2  clip_center = [0, 0, 0]
 //                                                       # or clip = "box", clip_min, clip_max
 //     [surface.material] color = [...]  inside = [...]  ambient  diffuse  specular  shininess
-//                        checker = [...]  checker_size     (render/detail/material_keys.h)
+//                        checker = [...]  checker_size     (render/detail/surface_keys.h)
 //     [render]   method = "sturm"  samples = 2  shadows = true  ambient_occlusion = false
 //                threads = 0
 //

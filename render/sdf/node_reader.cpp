@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "render/detail/material_keys.h"
+#include "render/detail/surface_keys.h"
 #include "render/detail/toml_reader.h"
 #include "render/sdf/algebraic_leaf.h"
 #include "render/sdf/booleans.h"
@@ -118,39 +118,9 @@ class Reader {
         return b;
     }
 
-    ClipRegion clip(TableReader& r, const toml::table& table, const std::string& path) {
-        const std::string shape = r.text("clip").value_or("sphere");
-        if (shape == "sphere") {
-            ClipSphere sphere;
-            sphere.radius = r.number("clip_radius", sphere.radius, true);
-            sphere.center = r.vector("clip_center", sphere.center);
-            return sphere;
-        }
-        if (shape == "box") {
-            ClipBox box;
-            box.min = r.vector("clip_min", box.min);
-            box.max = r.vector("clip_max", box.max);
-            if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) {
-                throw InputError(position(table) + ": " + path + "clip_min",
-                                 "must be below clip_max in every coordinate");
-            }
-            return box;
-        }
-        throw InputError(position(*table.get("clip")) + ": " + path + "clip",
-                         "expected \"sphere\" or \"box\", found \"" + shape + "\"");
-    }
-
-    NodePtr algebraic(TableReader& r, const toml::table& table, const std::string& path,
-                      const MaterialPtr& material) {
-        AlgebraicSource source;
-        source.equation = r.text("equation").value_or("");
-        source.param_file = r.text("param").value_or("");
-        source.key = path.substr(0, path.size() - 1);
-        if (source.equation.empty() == source.param_file.empty()) {
-            throw InputError(position(table) + ": " + source.key,
-                             "give exactly one of 'equation' and 'param'");
-        }
-        const ClipRegion region = clip(r, table, path);
+    NodePtr algebraic(TableReader& r, const toml::table& table, const MaterialPtr& material) {
+        const AlgebraicSource source = detail::read_algebraic_source(r, table);
+        const ClipRegion region = detail::read_clip_region(r, table);
         if (!compile_) {
             throw InputError(source.key, "algebraic leaves need a surface compiler");
         }
@@ -215,7 +185,7 @@ class Reader {
             return make_soft_objects(std::move(balls), r.number("threshold", 0.5), m);
         }
         if (type == "algebraic") {
-            return algebraic(r, table, path, inherited);
+            return algebraic(r, table, inherited);
         }
         if (type == "group" || type == "union") {
             return make_union(children(r, table, path, inherited));

@@ -134,6 +134,23 @@ TEST(Modular, ReviewRegressions) {
     EXPECT_THROW(modular_groebner(lex.generators, past), Timeout);
 }
 
+// A lift can agree with a fresh prime and still be wrong: both forced primes divide the
+// constant 2147483647 * 2147483629, so modulo each the ideal is (x, y^2), and the lift of the
+// first agrees with the second. Certification must reject it, and the run go on with more
+// primes to the basis over Q.
+TEST(Modular, CertificationRejectsAStableWrongLift) {
+    const IdealFile f =
+        parse_ideal_file("vars: x,y\norder: grevlex\nx-4611685975477714963\ny^2-x\n");
+    ModularOptions forced;
+    forced.primes = {2147483647u, 2147483629u};
+    ModularStats stats;
+    const GroebnerResult r = modular_groebner(f.generators, forced, &stats);
+    EXPECT_EQ(normalized(r.basis, *f.ring), "x-4611685975477714963\ny^2-4611685975477714963\n");
+    EXPECT_EQ(normalized(r.basis, *f.ring), normalized(groebner(f.generators).basis, *f.ring));
+    EXPECT_GT(stats.primes_used.size(), 2u);
+    EXPECT_TRUE(stats.certified);
+}
+
 TEST(Modular, UnluckyPrimeIsDetectedAndSetAside) {
     // Modulo p the first generator loses its leading term x and the ideal becomes the unit
     // ideal: leading monomials {1} against {x, y²} over Q.
