@@ -4,13 +4,19 @@ namespace locus::render::detail {
 
 AlgebraicSource read_algebraic_source(TableReader& r, const toml::table& table) {
     AlgebraicSource source;
-    source.equation = r.text("equation").value_or("");
-    source.param_file = r.text("param").value_or("");
     source.key = r.path().substr(0, r.path().size() - 1);
-    if (source.equation.empty() == source.param_file.empty()) {
+    const toml::node* equation = r.find("equation");
+    const toml::node* param = r.find("param");
+    if ((equation == nullptr) == (param == nullptr)) {
         throw InputError(position(table) + ": " + source.key,
                          "give exactly one of 'equation' and 'param'");
     }
+    const std::string key = equation != nullptr ? "equation" : "param";
+    const std::string text = r.text(key).value_or("");
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        r.fail(*table.get(key), key, key == "equation" ? "an equation" : "a file name");
+    }
+    (equation != nullptr ? source.equation : source.param_file) = text;
     return source;
 }
 
@@ -49,10 +55,9 @@ Material read_material_keys(TableReader& r, const Material& start,
         notes.push_back(position(*outside) + ": " + r.path() +
                         "outside: deprecated, read as 'color' (the name in every scene form)");
     }
-    const std::string color_key = outside != nullptr ? "outside" : "color";
-    m.color = r.vector(color_key, m.color);
-    const bool color_given = color != nullptr || outside != nullptr;
-    m.inside = r.vector("inside", color_given ? m.color : m.inside);
+    m.color = r.vector(outside != nullptr ? "outside" : "color", m.color);
+    // The old key keeps its old meaning: the inside stays at its default unless given.
+    m.inside = r.vector("inside", color != nullptr ? m.color : m.inside);
     m.ambient = r.non_negative("ambient", m.ambient);
     m.diffuse = r.non_negative("diffuse", m.diffuse);
     m.specular = r.non_negative("specular", m.specular);

@@ -15,7 +15,7 @@
 
 namespace locus::render::detail {
 
-// `equation` or `param`: exactly one of them, not empty. The source's key is the table's
+// `equation` or `param`: exactly one of them, not blank. The source's key is the table's
 // path ("surface[2]", "object[1].children[3]").
 AlgebraicSource read_algebraic_source(TableReader& r, const toml::table& table);
 
@@ -25,8 +25,9 @@ ClipRegion read_clip_region(TableReader& r, const toml::table& table);
 // color, inside, ambient, diffuse, specular, shininess, checker, checker_size on top of
 // `start`, the default of what the material is for. `inside` defaults to `color` when `color`
 // is given (a surface given one colour has one colour), and otherwise keeps the start's.
-// `outside`, the old [[surface]] name of `color`, is still read, with a deprecation note
-// appended to `notes`; giving both is an error.
+// `outside`, the old [[surface]] name of `color`, is still read with its old meaning (the
+// inside keeps its default), with a deprecation note appended to `notes`; giving both is an
+// error.
 Material read_material_keys(TableReader& r, const Material& start, std::vector<std::string>& notes);
 
 }  // namespace locus::render::detail

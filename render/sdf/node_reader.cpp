@@ -23,6 +23,10 @@ constexpr std::string_view kNodeTypes =
     "soft_objects, algebraic, group, union, intersection, difference, smooth_union, "
     "smooth_intersection, smooth_difference";
 
+// What a primitive without a material looks like, and where a named material starts: light
+// grey on both sides (an algebraic leaf without a material keeps the two-sided Material{}).
+const Material kPrimitiveMaterial = Material::plain({0.75, 0.75, 0.78});
+
 class Reader {
   public:
     Reader(const toml::table* materials, const SurfaceCompiler& compile, TraceMethod method,
@@ -38,8 +42,8 @@ class Reader {
                                  "expected a table ([materials." + name + "])");
             }
             TableReader r(*node.as_table(), "materials." + name + ".");
-            materials_[name] =
-                std::make_shared<const Material>(detail::read_material_keys(r, Material{}, notes));
+            materials_[name] = std::make_shared<const Material>(
+                detail::read_material_keys(r, kPrimitiveMaterial, notes));
             r.finish();
         }
     }
@@ -296,9 +300,7 @@ class Reader {
     }
 
     static MaterialPtr default_material() {
-        static const MaterialPtr material = [] {
-            return std::make_shared<const Material>(Material::plain({0.75, 0.75, 0.78}));
-        }();
+        static const MaterialPtr material = std::make_shared<const Material>(kPrimitiveMaterial);
         return material;
     }
 

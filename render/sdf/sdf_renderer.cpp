@@ -55,8 +55,9 @@ class SdfShader {
                                ? distance / light.radius
                                : 1.0 / std::tan(std::min(light.radius, 1.5));
             }
-            return tracer_.transmittance({origin, to_light}, std::min(distance, far_), penumbra,
-                                         counters);
+            return tracer_.transmittance({origin, to_light},
+                                         light.kind == Light::Kind::point ? distance : far_,
+                                         penumbra, counters);
         };
         return blinn_phong(material, side, point, view, lights_, ambient_factor, visibility);
     }

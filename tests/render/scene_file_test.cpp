@@ -88,6 +88,7 @@ TEST(SceneFile, MaterialsShareOneVocabulary) {
     const Scene old_key = parse_scene(
         "[[surface]]\nequation = \"x^2+y^2+z^2-1\"\n[surface.material]\noutside = [1, 0, 0]\n");
     EXPECT_EQ(old_key.surfaces[0].material.color, Vec3(1, 0, 0));
+    EXPECT_EQ(old_key.surfaces[0].material.inside, Material{}.inside);  // its old meaning
     ASSERT_EQ(old_key.notes.size(), 1u);
     EXPECT_EQ(old_key.notes[0],
               "line 4, column 11: surface[1].material.outside: deprecated, read "
@@ -111,7 +112,8 @@ TEST(SceneFile, MaterialsShareOneVocabulary) {
     EXPECT_EQ(m.at({0.75, 0.25, 0.25}).inside, Vec3(0, 1, 0));
     EXPECT_FALSE(m.at({0.75, 0.25, 0.25}).checker.has_value());
 
-    // The same keys in a named material of a scene tree; primitives without one are grey.
+    // The same keys in a named material of a scene tree, which starts, like a primitive
+    // without a material, light grey on both sides.
     const Scene tree = parse_scene(R"(
 [materials.red]
 outside = [1, 0, 0]
@@ -133,14 +135,15 @@ translate = [-3, 0, 0]
     ASSERT_EQ(tree.notes.size(), 1u);
     EXPECT_NE(tree.notes[0].find("materials.red.outside: deprecated"), std::string::npos);
     const Material red = tree.objects[0]->material_at({0, 0.9, 0});
+    const Vec3 grey(0.75, 0.75, 0.78);
     EXPECT_EQ(red.color, Vec3(1, 0, 0));
-    EXPECT_EQ(red.inside, Vec3(1, 0, 0));
+    EXPECT_EQ(red.inside, grey);
     EXPECT_EQ(red.specular, 0.5);
     const Material shiny = tree.objects[1]->material_at({3, 0.9, 0});
-    EXPECT_EQ(shiny.color, Material{}.color);
-    EXPECT_EQ(shiny.inside, Material{}.inside);
+    EXPECT_EQ(shiny.color, grey);
+    EXPECT_EQ(shiny.inside, grey);
     EXPECT_EQ(shiny.specular, 0.9);
-    EXPECT_EQ(tree.objects[2]->material_at({-3, 0.9, 0}).color, Vec3(0.75, 0.75, 0.78));
+    EXPECT_EQ(tree.objects[2]->material_at({-3, 0.9, 0}).color, grey);
 }
 
 TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
@@ -163,6 +166,8 @@ TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
               "surface: a scene needs at least one [[surface]] or [[object]]");
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\nparam = \"a.param\"\n"),
               "line 1, column 1: surface[1]: give exactly one of 'equation' and 'param'");
+    EXPECT_EQ(error_of("[[surface]]\nequation = \" \"\n"),
+              "line 2, column 12: surface[1].equation: expected an equation, found \" \"");
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\nclip = \"cone\"\n"),
               "line 3, column 8: surface[1].clip: expected \"sphere\" or \"box\", found \"cone\"");
     EXPECT_EQ(error_of("[image\nwidth = 3\n"),
