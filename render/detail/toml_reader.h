@@ -40,6 +40,16 @@ inline std::string describe(const toml::node& node) {
     return out.str();
 }
 
+// The integer a node holds; nothing when it holds anything else. Not node.value<int64_t>(),
+// which converts a float such as 3e21 by an overflowing cast (undefined behaviour; a fuzzer's
+// finding).
+inline std::optional<std::int64_t> integer_of(const toml::node& node) {
+    if (const toml::value<std::int64_t>* integer = node.as_integer()) {
+        return integer->get();
+    }
+    return std::nullopt;
+}
+
 // Reads one TOML table, remembering which keys were used so that the rest can be reported.
 class TableReader {
   public:
@@ -86,8 +96,8 @@ class TableReader {
         if (node == nullptr) {
             return fallback;
         }
-        const std::optional<std::int64_t> value = node->value<std::int64_t>();
-        if (!node->is_integer() || !value || *value < low || *value > high) {
+        const std::optional<std::int64_t> value = integer_of(*node);
+        if (!value || *value < low || *value > high) {
             fail(*node, key,
                  "an integer from " + std::to_string(low) + " to " + std::to_string(high));
         }

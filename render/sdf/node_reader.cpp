@@ -252,8 +252,8 @@ class Reader {
                     r.fail(*count, "repeat_count", "three integers ≥ 0 (copies each side)");
                 }
                 for (std::size_t i = 0; i < 3; ++i) {
-                    const auto value = (*array)[i].value<std::int64_t>();
-                    if (!(*array)[i].is_integer() || !value || *value < 0 || *value > 10000) {
+                    const std::optional<std::int64_t> value = detail::integer_of((*array)[i]);
+                    if (!value || *value < 0 || *value > 10000) {
                         r.fail(*count, "repeat_count", "three integers ≥ 0 (copies each side)");
                     }
                     counts[i] = static_cast<int>(*value);

@@ -162,6 +162,14 @@ TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
         "method 'magic': unknown method; expected one of certified, sturm, bernstein, laguerre, "
         "eigen, "
         "sphere-gradient, sphere-lipschitz, exact");
+    // A float where an integer belongs: refused without converting it (3e21 overflowed the
+    // conversion to an integer, undefined behaviour the scene fuzzer found).
+    EXPECT_EQ(error_of("[image]\nwidth = 3e21\n[[surface]]\nequation = \"x\"\n"),
+              "line 2, column 9: image.width: expected an integer from 1 to 16384, found 3e+21");
+    EXPECT_EQ(error_of("[[object]]\ntype = \"sphere\"\nrepeat = [2, 0, 0]\nrepeat_count = "
+                       "[1e300, 0, 0]\n"),
+              "line 4, column 16: object[1].repeat_count: expected three integers ≥ 0 (copies "
+              "each side), found an array of 3");
     EXPECT_EQ(error_of("[image]\nwidth = 10\n"),
               "surface: a scene needs at least one [[surface]] or [[object]]");
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\nparam = \"a.param\"\n"),
