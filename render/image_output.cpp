@@ -10,6 +10,7 @@
 #include <unistd.h>  // for access
 
 #include "algebra/error.h"
+#include "render/detail/plain_image_file.h"
 #include "render/shading.h"
 
 #ifdef LOCUS_IMAGE_LINKED
@@ -50,16 +51,27 @@ WriteFunction image_writer() {
 }
 #endif
 
-// Written under partial_path(path) and renamed when complete, so that a failure (a full disk,
-// a timeout) never leaves a truncated image under the name asked for.
+// 8-bit PNG and PPM go through detail::write_plain_image, every other format and every float
+// image through the OpenImageIO module: the common case never pays for loading it. Written
+// under partial_path(path) and renamed when complete, so that a failure (a full disk, a
+// timeout) never leaves a truncated image under the name asked for.
 void write_channels(const std::string& path, int width, int height, int channels, const void* data,
                     bool data_is_float, bool file_is_half) {
-    char error[512] = "";
     const std::string partial = partial_path(path);
-    if (image_writer()(partial.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
-                       file_is_half ? 1 : 0, error, sizeof error) != 0) {
+    std::string failure_message;
+    if (!data_is_float && channels == 3 && detail::is_plain_image_format(path)) {
+        failure_message = detail::write_plain_image(partial, width, height,
+                                                    static_cast<const std::uint8_t*>(data));
+    } else {
+        char error[512] = "";
+        if (image_writer()(partial.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
+                           file_is_half ? 1 : 0, error, sizeof error) != 0) {
+            failure_message = error;
+        }
+    }
+    if (!failure_message.empty()) {
         std::remove(partial.c_str());
-        throw ResourceLimit("cannot write '" + path + "': " + error);
+        throw ResourceLimit("cannot write '" + path + "': " + failure_message);
     }
     std::error_code failure;
     std::filesystem::rename(partial, path, failure);

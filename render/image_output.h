@@ -1,4 +1,5 @@
-// Writing rendered images with OpenImageIO. The colour image goes to `path` in the format its
+// Writing rendered images: PNG and PPM directly (libspng), every other format with
+// OpenImageIO, loaded only then. The colour image goes to `path` in the format its
 // extension names: 8-bit sRGB for PNG/JPEG/TIFF and the like, linear half floats for EXR.
 // Requested AOVs go beside it as EXR files named <stem>.<aov>.exr (depth: one channel, the
 // distance from the eye, +inf on a miss; normal: three channels; work: one channel).
