@@ -194,11 +194,12 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         return result;
     }
     if (result.outcome != GroebnerOutcome::complete) {
-        // Stopped early: return what generates the ideal (every element, monic, sorted), without
-        // claiming the reduced-basis properties.
+        // Stopped early: return what generates the ideal (every element, primitive over Z,
+        // sorted), without claiming the reduced-basis properties, and at once: the deadline
+        // has passed.
         std::vector<Polynomial> partial;
         for (const auto& e : basis) {
-            partial.push_back(detail::to_monic_polynomial(e.poly, ring));
+            partial.push_back(detail::to_integer_polynomial(e.poly, ring));
         }
         std::sort(partial.begin(), partial.end(), [&](const Polynomial& a, const Polynomial& b) {
             return layout.compare(a.leading_monomial(), b.leading_monomial()) < 0;

@@ -88,7 +88,9 @@ std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
                                               std::size_t basis_size);
 
 struct GroebnerResult {
-    std::vector<Polynomial> basis;  // normalized (print.h): monic, leading monomials ascending
+    // complete: normalized (print.h), monic, leading monomials ascending. Stopped early:
+    // leading monomials ascending, each element primitive over Z (no time is left to divide).
+    std::vector<Polynomial> basis;
     GroebnerOutcome outcome = GroebnerOutcome::complete;
     GroebnerStats stats;
 };

@@ -62,6 +62,16 @@ Polynomial to_monic_polynomial(const IntegerPolynomial& f, const RingPtr& ring) 
     return p;
 }
 
+Polynomial to_integer_polynomial(const IntegerPolynomial& f, const RingPtr& ring) {
+    Polynomial p(ring);
+    p.reserve(f.size());
+    const std::size_t w = ring->words();
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        p.push_back_term(Rational(f.coefficients[i]), f.monomial(i, w));
+    }
+    return p;
+}
+
 void make_primitive(IntegerPolynomial& f) {
     if (f.empty()) {
         return;

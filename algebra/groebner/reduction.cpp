@@ -81,6 +81,14 @@ void Reducer::combine(IntegerPolynomial& p, std::size_t from, const Integer& a, 
     std::swap(p.coefficients, out.coefficients);
 }
 
+bool Reducer::deadline_passed(bool costly_step) {
+    if (!deadline_ || (!costly_step && --steps_to_check_ > 0)) {
+        return false;
+    }
+    steps_to_check_ = 16;
+    return std::chrono::steady_clock::now() > *deadline_;
+}
+
 IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisElement>& basis,
                                   ReductionCounts& counts, bool tail,
                                   const ReducerAdmission* admission) {
@@ -105,6 +113,10 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
             bits = std::max<std::size_t>(bits, fmpz_bits(result.coefficients[0].get()));
         }
         if (bits > 2 * bits_after_content + 64) {
+            // A gcd over every coefficient: on 10⁶-bit coefficients it takes seconds.
+            if (deadline_passed(true)) {
+                throw ReductionInterrupted{};
+            }
             Integer content(lc);
             for (const Integer& c : result.coefficients) {
                 fmpz_gcd(content.get(), content.get(), c.get());
@@ -155,8 +167,7 @@ IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisEl
         result.sugar = std::max(result.sugar, sugar);
         bucket.subtract_multiple(b, m.data(), r, 1);
         ++counts.steps;
-        // The clock every 16 steps: read at every step it was 2 % of small reductions.
-        if (deadline_ && counts.steps % 16 == 0 && std::chrono::steady_clock::now() > *deadline_) {
+        if (deadline_passed(bits + fmpz_bits(r.coefficients[0].get()) > 4096)) {
             throw ReductionInterrupted{};
         }
     }
