@@ -6,7 +6,7 @@ BUILD := build/$(PRESET)
 LOCUS := $(BUILD)/cli/locus
 BENCH := $(BUILD)/bench/locus-bench
 
-.PHONY: all deps configure build demo test fuzz mutants bench notebooks format clean
+.PHONY: all deps configure build demo test install fuzz mutants bench notebooks format clean
 
 all: build
 
@@ -24,6 +24,12 @@ demo: build
 
 test: build
 	ctest --preset $(PRESET) -j $(JOBS)
+
+# The executable, its image module, headers, CMake package files, docs and examples under
+# PREFIX; the tree may be moved afterwards.
+PREFIX ?= /usr/local
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # The libFuzzer targets (tests/fuzz), FUZZ_SECONDS each (CI: 20).
 FUZZ_SECONDS ?= 60

@@ -5,12 +5,14 @@
 #include "cli/commands.h"
 #include "cli/process_limits.h"
 #include "cli/run_app.h"
+#include "cli/version.h"
 
 int main(int argc, char** argv) {
     using namespace locus::cli;
     install_out_of_memory_handlers();
     CLI::App app("locus: exact implicit equations and Gröbner bases over Q", "locus");
     app.footer(kExitCodesHelp);
+    app.set_version_flag("--version", version_text());
     app.require_subcommand(1);
     CommandContext context;
     add_groebner_command(app, context);
