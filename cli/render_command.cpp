@@ -1,6 +1,8 @@
 // `locus render EQUATION|SCENE.toml|--param FILE -o out.png [flags]`: ray-trace algebraic
 // surfaces. Flags override the scene file and the defaults (render/scene.h); their names are
 // the interface benchmarks and comparisons with other renderers rely on.
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -17,6 +19,7 @@
 #include "render/renderer.h"
 #include "render/scene_file.h"
 #include "render/sdf/sdf_renderer.h"
+#include "render/turntable.h"
 
 namespace locus::cli {
 namespace {
@@ -30,6 +33,7 @@ struct RenderArgs {
     std::string method;
     std::optional<int> samples;
     std::optional<int> threads;
+    std::optional<int> turntable;
     ProcessLimitArgs limits;
     std::vector<std::string> aovs;
 };
@@ -175,54 +179,7 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
     return scene;
 }
 
-int run_render(const RenderArgs& args, ProgressLine& progress) {
-    // The limit covers implicitizing `param` surfaces as well as rendering.
-    const Deadline deadline = apply_process_limits(args.limits);
-    render::ExecutionSettings execution;
-    execution.progress = progress.fraction("render");
-    execution.deadline = deadline;
-    render::Scene scene;
-    std::vector<render::Aov> aovs;
-    render::RenderStats stats;
-    render::RenderedImage image;
-    try {
-        render::check_image_path(args.output);
-    } catch (const Error& e) {
-        throw failure_about("", e);
-    }
-    // Registered from the start, so that a timeout in any phase says that nothing was written.
-    const std::string partial = render::partial_path(args.output);
-    register_partial_file(partial, args.output);
-    try {
-        scene = build_scene(args, deadline);
-        for (const std::string& name : args.aovs) {
-            aovs.push_back(render::parse_aov(name));
-        }
-        execution.aovs = !aovs.empty();
-        const std::vector<algebra::CompiledPolynomial> compiled = [&] {
-            try {
-                return compile_surfaces(scene, deadline);
-            } catch (const CommandFailure& e) {
-                // A scene file's surface: say which file.
-                const std::string message = e.what();
-                if (args.input.ends_with(".toml") && message.rfind(args.input, 0) != 0) {
-                    throw CommandFailure(e.code(), args.input + ": " + message);
-                }
-                throw;
-            }
-        }();
-        execution.threads = scene.options.threads;
-        image = scene.objects.empty()
-                    ? render::render(scene, compiled, execution, &stats)
-                    : render::render_sdf_scene(scene, compiled, execution, &stats);
-    } catch (const Timeout& e) {
-        throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
-                                               timeout_text(args.limits) +
-                                               "); nothing written to '" + args.output + "'");
-    }
-    progress.clear();
-    const std::vector<std::string> written = render::write_image(image, args.output, aovs);
-    unregister_partial_file(partial);
+void print_frame_stats(const render::Scene& scene, const render::RenderStats& stats) {
     if (stats.hits == 0) {
         std::fprintf(stderr,
                      "locus: warning: no ray hit a surface: every surface lies outside its clip "
@@ -238,8 +195,107 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         std::fprintf(stderr, "scene tree: %.1f primitive evaluations per primary ray\n",
                      static_cast<double>(stats.primary_work) / stats.primary_rays);
     }
-    for (const std::string& path : written) {
-        std::fprintf(stderr, "wrote %s\n", path.c_str());
+}
+
+int run_render(const RenderArgs& args, ProgressLine& progress) {
+    // The limit covers implicitizing `param` surfaces as well as rendering.
+    const Deadline deadline = apply_process_limits(args.limits);
+    if (args.turntable && (*args.turntable < 1 || *args.turntable > 100000)) {
+        bad_flag("--turntable", std::to_string(*args.turntable), "a frame count from 1 to 100000");
+    }
+    const int frames = args.turntable.value_or(0);
+    render::ExecutionSettings execution;
+    execution.deadline = deadline;
+    render::Scene scene;
+    std::vector<render::Aov> aovs;
+    try {
+        render::check_image_path(args.output);
+    } catch (const Error& e) {
+        throw failure_about("", e);
+    }
+    // Registered from the start, so that a timeout in any phase says that nothing was written.
+    std::string partial =
+        render::partial_path(frames > 0 ? render::frame_path(args.output, 1, frames) : args.output);
+    register_partial_file(partial, args.output);
+    std::vector<algebra::CompiledPolynomial> compiled;
+    try {
+        scene = build_scene(args, deadline);
+        for (const std::string& name : args.aovs) {
+            aovs.push_back(render::parse_aov(name));
+        }
+        execution.aovs = !aovs.empty();
+        try {
+            compiled = compile_surfaces(scene, deadline);
+        } catch (const CommandFailure& e) {
+            // A scene file's surface: say which file.
+            const std::string message = e.what();
+            if (args.input.ends_with(".toml") && message.rfind(args.input, 0) != 0) {
+                throw CommandFailure(e.code(), args.input + ": " + message);
+            }
+            throw;
+        }
+    } catch (const Timeout& e) {
+        throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
+                                               timeout_text(args.limits) +
+                                               "); nothing written to '" + args.output + "'");
+    }
+    execution.threads = scene.options.threads;
+    const render::CameraSpec base_camera = scene.camera.value_or(render::default_camera(scene));
+    const auto started = std::chrono::steady_clock::now();
+    render::RenderStats total;
+    // One frame, or each turntable frame in turn: the surfaces are compiled once above.
+    for (int frame = 0; frame < std::max(frames, 1); ++frame) {
+        const std::string path =
+            frames > 0 ? render::frame_path(args.output, frame + 1, frames) : args.output;
+        if (frames > 0) {
+            scene.camera = render::turntable_camera(base_camera, frame, frames);
+            if (frame > 0) {
+                partial = render::partial_path(path);
+                register_partial_file(partial, path);
+            }
+        }
+        execution.progress = progress.fraction(frames > 0 ? "frame " + std::to_string(frame + 1) +
+                                                                "/" + std::to_string(frames)
+                                                          : std::string("render"));
+        render::RenderStats stats;
+        render::RenderedImage image;
+        try {
+            image = scene.objects.empty()
+                        ? render::render(scene, compiled, execution, &stats)
+                        : render::render_sdf_scene(scene, compiled, execution, &stats);
+        } catch (const Timeout& e) {
+            throw CommandFailure(
+                exit_timeout,
+                std::string(e.what()) + " (--timeout " + timeout_text(args.limits) + "); " +
+                    (frame == 0 ? "nothing written to '" + args.output + "'"
+                                : std::to_string(frame) + " of " + std::to_string(frames) +
+                                      " frames written, up to '" +
+                                      render::frame_path(args.output, frame, frames) + "'"));
+        }
+        progress.clear();
+        const std::vector<std::string> written = render::write_image(image, path, aovs);
+        unregister_partial_file(partial);
+        if (frames == 0) {
+            print_frame_stats(scene, stats);
+            for (const std::string& written_path : written) {
+                std::fprintf(stderr, "wrote %s\n", written_path.c_str());
+            }
+        }
+        total.seconds += stats.seconds;
+        total.primary_rays += stats.primary_rays;
+        total.hits += stats.hits;
+        total.unknown += stats.unknown;
+        total.primary_work += stats.primary_work;
+    }
+    if (frames > 0) {
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        print_frame_stats(scene, total);
+        std::fprintf(stderr, "turntable: %d frames in %.3f s (%.2f frames/s, writing included)\n",
+                     frames, seconds, frames / seconds);
+        std::fprintf(stderr, "wrote %s ... %s\n",
+                     render::frame_path(args.output, 1, frames).c_str(),
+                     render::frame_path(args.output, frames, frames).c_str());
     }
     return exit_ok;
 }
@@ -268,6 +324,9 @@ void add_render_command(CLI::App& app, CommandContext& context) {
     add_choice(cmd, "--ao", args->ao, on_off_choices(), "ambient occlusion (default off)");
     cmd->add_option("--background", args->background, "background colour R,G,B (linear, 0..1)");
     cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
+    cmd->add_option("--turntable", args->turntable,
+                    "N: render N frames around the up axis through the target, written as "
+                    "NAME_0001.png, ...");
     add_process_limit_options(cmd, args->limits);
     add_choice(cmd, "--aov", args->aovs, {{"depth", ""}, {"normal", ""}, {"work", ""}},
                "also write these as <stem>.<aov>.exr, comma-separated")

@@ -99,6 +99,16 @@ expect "resultant refuses space curves" 2 "plane curves" -- \
 expect "render an equation to PNG" 0 "wrote $tmp/sphere.png" -- \
     "$locus" render "x^2+y^2+z^2-1" -o "$tmp/sphere.png" --size 48x32 --samples 2 --threads 1
 expect "the PNG exists" 0 "" -- test -s "$tmp/sphere.png"
+# An ellipsoid with three different axes: every turned frame differs from the still.
+expect "turntable: three numbered frames" 0 "turntable: 3 frames" -- \
+    "$locus" render "4*x^2+y^2+z^2/4-1" -o "$tmp/turn.png" --size 16x16 --turntable 3 --threads 1
+expect "turntable: the frames exist" 0 "" -- \
+    test -s "$tmp/turn_0001.png" -a -s "$tmp/turn_0002.png" -a -s "$tmp/turn_0003.png" -a ! -e "$tmp/turn_0004.png"
+"$locus" render "4*x^2+y^2+z^2/4-1" -o "$tmp/still.png" --size 16x16 --threads 1 2>/dev/null
+expect "turntable: frame 1 is the still image" 0 "" -- cmp "$tmp/still.png" "$tmp/turn_0001.png"
+expect "turntable: frame 2 is turned" 1 "" -- cmp -s "$tmp/still.png" "$tmp/turn_0002.png"
+expect "turntable: a count of 0" 2 "--turntable '0': expected a frame count from 1 to 100000" -- \
+    "$locus" render "x^2+y^2+z^2-1" -o "$tmp/turn.png" --turntable 0
 expect "square-free part reported" 0 "rendering its square-free part x^2+y^2+z^2-1" -- \
     "$locus" render "(x^2+y^2+z^2-1)^2" -o "$tmp/squared.png" --size 16x16
 expect "render AOVs" 0 "wrote $tmp/aov.depth.exr" -- \
