@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <flint/fmpz.h>
+
 #include "algebra/error.h"
 #include "algebra/groebner/buchberger.h"
 #include "algebra/groebner/signature_groebner.h"
@@ -42,6 +44,24 @@ bool tiny(const locus::algebra::IdealFile& file) {
         }
     }
     return true;
+}
+
+// Coefficients of more than 2¹⁶ bits (about 20 000 digits), which a few bytes such as
+// `2e123^30000` build: printing 3.7 million digits and reading them back took 4.5 s in release
+// and over 10 s under the sanitizers, the whole of this target's time limit, and the
+// algorithms' work on them is big-number arithmetic that this target does not compare. That
+// such inputs stop at --timeout is the job of the deadline tests (cli.hostile_input,
+// Groebner.APartialBasisOfHugeCoefficientsIsReturnedAtTheDeadline).
+bool has_giant_coefficient(const locus::algebra::IdealFile& file) {
+    for (const Polynomial& g : file.generators) {
+        for (std::size_t i = 0; i < g.num_terms(); ++i) {
+            if (fmpz_bits(g.coefficient(i).numerator()) > 65536 ||
+                fmpz_bits(g.coefficient(i).denominator()) > 65536) {
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 void compare_algorithms(const locus::algebra::IdealFile& file, std::string_view input) {
@@ -82,6 +102,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         file = locus::algebra::parse_ideal_file(*text);
     } catch (const locus::Error&) {
+        return 0;
+    }
+    if (has_giant_coefficient(file)) {
         return 0;
     }
     const std::string printed = locus::algebra::to_ideal_file(file.generators, *file.ring);
