@@ -19,7 +19,9 @@ locus="$tmp/moved/bin/locus"
 sphere="x^2+y^2+z^2-1"
 expect "the moved locus renders a PNG" 0 "wrote $tmp/s.png" -- \
     "$locus" render "$sphere" --size 16x16 -o "$tmp/s.png"
-expect "the PNG is a PNG" 0 "PNG image data, 16 x 16, 8-bit/color RGB" -- file "$tmp/s.png"
+# The PNG signature, then IHDR: width 16, height 16, bit depth 8, colour type 2 (RGB).
+expect "the PNG is a 16x16 8-bit RGB PNG" 0 "89504e470d0a1a0a0000000d494844520000001000000010 0802" -- \
+    bash -c "head -c 26 '$tmp/s.png' | od -An -tx1 | tr -d ' \n' | sed -E 's/(.{48})/\\1 /'"
 # glibc's loader names every file it maps: the module must come from the moved tree.
 module_loaded="file=$tmp/moved/lib/locus/liblocus_image_file.so"
 if [[ "$sanitized" == sanitized ]]; then
