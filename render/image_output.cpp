@@ -1,7 +1,6 @@
 #include "render/image_output.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -104,9 +103,7 @@ void write_channels(const std::string& path, int width, int height, int channels
 }
 
 bool is_float_format(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = detail::lowercase_extension(path);
     return extension == ".exr" || extension == ".hdr";
 }
 
@@ -118,9 +115,7 @@ std::string partial_path(const std::string& path) {
 }
 
 void check_image_path(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = detail::lowercase_extension(path);
     static const char* const known[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr",
                                         ".hdr", ".ppm", ".pnm",  ".bmp", ".tga",  ".webp"};
     if (std::find(std::begin(known), std::end(known), extension) == std::end(known)) {

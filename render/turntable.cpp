@@ -1,6 +1,8 @@
 #include "render/turntable.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 
@@ -27,10 +29,11 @@ CameraSpec turntable_camera(const CameraSpec& base, int k, int frames) {
 std::string frame_path(const std::string& path, int frame, int frames) {
     const std::filesystem::path p(path);
     const int digits = std::max(4, static_cast<int>(std::to_string(frames).size()));
-    std::string number = std::to_string(frame);
-    number.insert(
-        0, static_cast<std::size_t>(std::max(0, digits - static_cast<int>(number.size()))), '0');
-    return (p.parent_path() / (p.stem().string() + "_" + number + p.extension().string())).string();
+    char number[16];
+    std::snprintf(number, sizeof number, "%0*d", digits, frame);
+    return (p.parent_path() /
+            (p.stem().string() + "_" + std::string(number) + p.extension().string()))
+        .string();
 }
 
 }  // namespace locus::render

@@ -199,7 +199,7 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
         // has passed.
         std::vector<Polynomial> partial;
         for (const auto& e : basis) {
-            partial.push_back(detail::to_integer_polynomial(e.poly, ring));
+            partial.push_back(detail::to_primitive_polynomial(e.poly, ring));
         }
         std::sort(partial.begin(), partial.end(), [&](const Polynomial& a, const Polynomial& b) {
             return layout.compare(a.leading_monomial(), b.leading_monomial()) < 0;

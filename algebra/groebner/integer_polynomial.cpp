@@ -62,7 +62,7 @@ Polynomial to_monic_polynomial(const IntegerPolynomial& f, const RingPtr& ring) 
     return p;
 }
 
-Polynomial to_integer_polynomial(const IntegerPolynomial& f, const RingPtr& ring) {
+Polynomial to_primitive_polynomial(const IntegerPolynomial& f, const RingPtr& ring) {
     Polynomial p(ring);
     p.reserve(f.size());
     const std::size_t w = ring->words();

@@ -37,10 +37,11 @@ IntegerPolynomial to_integer_polynomial(const Polynomial& f);
 std::vector<IntegerPolynomial> sorted_integer_generators(std::span<const Polynomial> generators);
 // Back to Q, made monic.
 Polynomial to_monic_polynomial(const IntegerPolynomial& f, const RingPtr& ring);
-// Back to Q with the integer coefficients as they are: no division, so its cost is a copy
-// whatever their size. For bases returned after a deadline, where making monic (a gcd per
-// coefficient) took seconds on coefficients of 10⁵ digits and more.
-Polynomial to_integer_polynomial(const IntegerPolynomial& f, const RingPtr& ring);
+// Back to Q with the integer coefficients as they are (primitive, as every basis element and
+// generator is): no division, so its cost is a copy whatever their size. For bases returned
+// after a deadline, where making monic (a gcd per coefficient) took seconds on coefficients of
+// 10⁵ digits and more.
+Polynomial to_primitive_polynomial(const IntegerPolynomial& f, const RingPtr& ring);
 // Divides by the gcd of the coefficients and makes the leading coefficient positive.
 void make_primitive(IntegerPolynomial& f);
 

@@ -334,12 +334,12 @@ void SignatureRun::add_element(IntegerPolynomial h) {
 
 GroebnerResult SignatureRun::partial(GroebnerResult result, const RingPtr& ring) const {
     // Every element so far and every generator: they generate the ideal, whatever was left.
-    // Primitive over Z, not monic: the deadline has passed (to_integer_polynomial says why).
+    // Primitive over Z, not monic: the deadline has passed (to_primitive_polynomial says why).
     for (const BasisElement& e : basis_) {
-        result.basis.push_back(detail::to_integer_polynomial(e.poly, ring));
+        result.basis.push_back(detail::to_primitive_polynomial(e.poly, ring));
     }
     for (const IntegerPolynomial& f : generators_) {
-        result.basis.push_back(detail::to_integer_polynomial(f, ring));
+        result.basis.push_back(detail::to_primitive_polynomial(f, ring));
     }
     std::sort(result.basis.begin(), result.basis.end(),
               [&](const Polynomial& a, const Polynomial& b) {

@@ -8,6 +8,10 @@
 
 namespace locus::render::detail {
 
+// The extension of `path` in lower case, with its dot (".png"; "" when there is none): what
+// picks an image format.
+std::string lowercase_extension(const std::string& path);
+
 // True for the extensions this writer handles (".png", ".ppm", ".pnm", any case).
 bool is_plain_image_format(const std::string& path);
 
