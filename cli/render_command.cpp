@@ -15,6 +15,7 @@
 #include "cli/exit_codes.h"
 #include "cli/process_limits.h"
 #include "cli/surface_input.h"
+#include "render/framing.h"
 #include "render/image_output.h"
 #include "render/renderer.h"
 #include "render/scene_file.h"
@@ -34,6 +35,7 @@ struct RenderArgs {
     std::optional<int> samples;
     std::optional<int> threads;
     std::optional<int> turntable;
+    bool fit = false;
     ProcessLimitArgs limits;
     std::vector<std::string> aovs;
 };
@@ -82,25 +84,14 @@ void apply_flags(const RenderArgs& args, render::Scene& scene) {
         if (!(*args.clip_radius > 0.0) || !std::isfinite(*args.clip_radius)) {
             bad_flag("--clip-radius", std::to_string(*args.clip_radius), "a positive radius");
         }
+        if (args.fit) {
+            throw CommandFailure(exit_input,
+                                 "--fit and --clip-radius: give one (--fit sets the clip spheres)");
+        }
         for (render::Surface& surface : scene.surfaces) {
             surface.clip = render::ClipSphere{{0.0, 0.0, 0.0}, *args.clip_radius};
+            surface.fit_clip = false;
         }
-    }
-    if (!args.eye.empty() || !args.target.empty() || !args.up.empty() || args.fov) {
-        render::CameraSpec camera = scene.camera.value_or(render::default_camera(scene));
-        if (!args.eye.empty()) {
-            camera.eye = parse_triple("--eye", args.eye);
-        }
-        if (!args.target.empty()) {
-            camera.target = parse_triple("--target", args.target);
-        }
-        if (!args.up.empty()) {
-            camera.up = parse_triple("--up", args.up);
-        }
-        if (args.fov) {
-            camera.fov_degrees = *args.fov;
-        }
-        scene.camera = camera;
     }
     if (!args.method.empty()) {
         scene.options.method = render::parse_trace_method(args.method);
@@ -150,7 +141,7 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
                 method = render::parse_trace_method(args.method);
             }
             scene = render::parse_scene(read_input(args.input), scene_surface_compiler(deadline),
-                                        method);
+                                        method, deadline);
             for (const std::string& note : scene.notes) {
                 std::fprintf(stderr, "locus: %s: %s\n", args.input.c_str(), note.c_str());
             }
@@ -179,12 +170,88 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
     return scene;
 }
 
-void print_frame_stats(const render::Scene& scene, const render::RenderStats& stats) {
-    if (stats.hits == 0) {
-        std::fprintf(stderr,
-                     "locus: warning: no ray hit a surface: every surface lies outside its clip "
-                     "region or out of the camera's view (see --clip-radius, --eye, --target)\n");
+// The camera flags, on top of the scene's camera or the one framed on the (fitted) clip regions.
+void apply_camera_flags(const RenderArgs& args, render::Scene& scene) {
+    if (args.eye.empty() && args.target.empty() && args.up.empty() && !args.fov) {
+        return;
     }
+    render::CameraSpec camera = scene.camera.value_or(render::default_camera(scene));
+    if (!args.eye.empty()) {
+        camera.eye = parse_triple("--eye", args.eye);
+    }
+    if (!args.target.empty()) {
+        camera.target = parse_triple("--target", args.target);
+    }
+    if (!args.up.empty()) {
+        camera.up = parse_triple("--up", args.up);
+    }
+    if (args.fov) {
+        camera.fov_degrees = *args.fov;
+    }
+    scene.camera = camera;
+}
+
+using Extents = std::vector<std::optional<render::SurfaceExtent>>;
+
+// Fits the clip spheres of the surfaces given without one (all of them under --fit) to their
+// extents; --fit also drops the scene file's camera, so that the camera frames them too.
+Extents fit_scene(const RenderArgs& args, render::Scene& scene,
+                  std::span<const algebra::CompiledPolynomial> compiled, Deadline deadline) {
+    Extents extents = render::fit_clip_regions(scene, compiled, args.fit, deadline);
+    if (!args.fit) {
+        return extents;
+    }
+    scene.camera.reset();
+    for (std::size_t i = 0; i < extents.size(); ++i) {
+        if (extents[i]->kind != render::SurfaceExtent::Kind::bounded) {
+            std::fprintf(stderr,
+                         "locus: warning: --fit: surface %zu %s; it keeps the default clip "
+                         "sphere (radius 2 about the origin)\n",
+                         i + 1,
+                         extents[i]->kind == render::SurfaceExtent::Kind::unbounded
+                             ? "is not bounded (its top-degree form is not definite)"
+                             : "has no real point on the lines searched");
+        }
+    }
+    if (!scene.objects.empty()) {
+        std::fprintf(stderr,
+                     "locus: note: --fit frames the camera on the scene tree; its "
+                     "algebraic leaves are fitted only where they have no clip keys\n");
+    }
+    return extents;
+}
+
+// Says on stderr why a picture shows only the background, surface by surface.
+void warn_nothing_hit(const render::Scene& scene,
+                      std::span<const algebra::CompiledPolynomial> compiled, const Extents& extents,
+                      const render::CameraSpec& camera, Deadline deadline) {
+    if (!scene.objects.empty() || scene.surfaces.empty()) {
+        std::fprintf(stderr,
+                     "locus: warning: no ray hit the scene: the picture shows the "
+                     "background only (see --fit, --eye, --target)\n");
+        return;
+    }
+    std::fprintf(stderr,
+                 "locus: warning: no ray hit %s, so the picture shows the background "
+                 "only:\n",
+                 scene.surfaces.size() == 1 ? "the surface" : "any surface");
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        std::string reason;
+        try {
+            reason = render::why_not_hit(scene.surfaces[i], compiled[i], camera, scene.width,
+                                         scene.height, extents[i], deadline);
+        } catch (const Timeout&) {
+            reason = "(not examined: --timeout passed)";
+        }
+        if (scene.surfaces.size() == 1) {
+            std::fprintf(stderr, "locus:   %s\n", reason.c_str());
+        } else {
+            std::fprintf(stderr, "locus:   surface %zu: %s\n", i + 1, reason.c_str());
+        }
+    }
+}
+
+void print_frame_stats(const render::Scene& scene, const render::RenderStats& stats) {
     std::fprintf(stderr,
                  "rendered %dx%d, %d×%d samples, method %s: %.3f s, %.2f M primary rays/s, "
                  "%ld hits, %ld undecided rays\n",
@@ -218,6 +285,7 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         render::partial_path(frames > 0 ? render::frame_path(args.output, 1, frames) : args.output);
     register_partial_file(partial, args.output);
     std::vector<algebra::CompiledPolynomial> compiled;
+    Extents extents;
     try {
         scene = build_scene(args, deadline);
         for (const std::string& name : args.aovs) {
@@ -234,6 +302,8 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
             }
             throw;
         }
+        extents = fit_scene(args, scene, compiled, deadline);
+        apply_camera_flags(args, scene);
     } catch (const Timeout& e) {
         throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
                                                timeout_text(args.limits) +
@@ -276,6 +346,9 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         const std::vector<std::string> written = render::write_image(image, path, aovs);
         unregister_partial_file(partial);
         if (frames == 0) {
+            if (stats.hits == 0) {
+                warn_nothing_hit(scene, compiled, extents, base_camera, deadline);
+            }
             print_frame_stats(scene, stats);
             for (const std::string& written_path : written) {
                 std::fprintf(stderr, "wrote %s\n", written_path.c_str());
@@ -290,6 +363,9 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     if (frames > 0) {
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        if (total.hits == 0) {
+            warn_nothing_hit(scene, compiled, extents, base_camera, deadline);
+        }
         print_frame_stats(scene, total);
         std::fprintf(stderr, "turntable: %d frames in %.3f s (%.2f frames/s, writing included)\n",
                      frames, seconds, frames / seconds);
@@ -317,7 +393,11 @@ void add_render_command(CLI::App& app, CommandContext& context) {
     cmd->add_option("--up", args->up, "up direction X,Y,Z");
     cmd->add_option("--fov", args->fov, "vertical field of view in degrees (default 35)");
     cmd->add_option("--clip-radius", args->clip_radius,
-                    "clip every surface to a sphere of this radius about the origin (default 2)");
+                    "clip every surface to a sphere of this radius about the origin (default: "
+                    "fitted to a bounded surface, else 2)");
+    cmd->add_flag("--fit", args->fit,
+                  "clip spheres and camera from the surfaces' extents, replacing the scene "
+                  "file's clip regions and camera (camera flags still apply)");
     add_choice(cmd, "--method", args->method, trace_method_choices(), "the root finder");
     cmd->add_option("--samples", args->samples, "N: N×N samples per pixel (default 1)");
     add_choice(cmd, "--shadows", args->shadows, on_off_choices(), "shadows (default on)");

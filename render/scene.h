@@ -34,6 +34,9 @@ struct Surface {
     ClipRegion clip = ClipSphere{};
     Material material;
     std::string source;  // where it was given, for messages ("line 4, column 12: surface[1]")
+    // No clip region given: render/framing.h's fit_clip_regions replaces `clip` by a sphere
+    // about the surface's extent when the surface is bounded.
+    bool fit_clip = true;
 };
 
 struct RenderOptions {

@@ -22,7 +22,10 @@ Surface read_surface(const toml::table& table, const std::string& path,
     s.param_file = source.param_file;
     const char* given = source.equation.empty() ? "param" : "equation";
     s.source = position(*table.get(given)) + ": " + path + given;
-    s.clip = detail::read_clip_region(r, table);
+    if (const std::optional<ClipRegion> clip = detail::read_clip_region(r, table)) {
+        s.clip = *clip;
+        s.fit_clip = false;
+    }
     if (const toml::table* material = r.subtable("material")) {
         TableReader m(*material, path + "material.");
         s.material = detail::read_material_keys(m, s.material, notes);
@@ -63,7 +66,8 @@ Light read_light(const toml::table& table, const std::string& path) {
 }  // namespace
 
 Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
-                  std::optional<TraceMethod> method) {
+                  std::optional<TraceMethod> method,
+                  std::optional<std::chrono::steady_clock::time_point> deadline) {
     toml::table root;
     try {
         root = toml::parse(text);
@@ -125,8 +129,8 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
     }
     const toml::table* materials = r.subtable("materials");
     if (const toml::array* objects = r.array_of_tables("object")) {
-        scene.objects =
-            sdf::read_objects(*objects, materials, compile, scene.options.method, scene.notes);
+        scene.objects = sdf::read_objects(*objects, materials, compile, scene.options.method,
+                                          deadline, scene.notes);
     } else if (materials != nullptr) {
         throw InputError(position(*root.get("materials")) + ": materials",
                          "named materials are for [[object]] trees; this scene has none");

@@ -22,6 +22,8 @@
 // number, found -2". A deprecated key that is still read leaves a note in Scene::notes.
 #pragma once
 
+#include <chrono>
+#include <optional>
 #include <string_view>
 
 #include "render/scene.h"
@@ -30,8 +32,10 @@ namespace locus::render {
 
 // `compile` turns the algebraic leaves of [[object]] trees into compiled polynomials.
 // `method`, when given, replaces [render] method before the algebraic leaves are built (the
-// command line's --method).
+// command line's --method). Fitting an algebraic leaf without clip keys to its extent throws
+// Timeout after `deadline`.
 Scene parse_scene(std::string_view text, const SurfaceCompiler& compile = {},
-                  std::optional<TraceMethod> method = std::nullopt);
+                  std::optional<TraceMethod> method = std::nullopt,
+                  std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 }  // namespace locus::render

@@ -1,5 +1,8 @@
 #include "render/detail/surface_keys.h"
 
+#include <algorithm>
+#include <array>
+
 namespace locus::render::detail {
 
 AlgebraicSource read_algebraic_source(TableReader& r, const toml::table& table) {
@@ -20,7 +23,13 @@ AlgebraicSource read_algebraic_source(TableReader& r, const toml::table& table) 
     return source;
 }
 
-ClipRegion read_clip_region(TableReader& r, const toml::table& table) {
+std::optional<ClipRegion> read_clip_region(TableReader& r, const toml::table& table) {
+    const bool given = std::ranges::any_of(
+        std::array{"clip", "clip_radius", "clip_center", "clip_min", "clip_max"},
+        [&table](const char* key) { return table.get(key) != nullptr; });
+    if (!given) {
+        return std::nullopt;
+    }
     const std::string shape = r.text("clip").value_or("sphere");
     if (shape == "sphere") {
         ClipSphere sphere;

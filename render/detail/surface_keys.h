@@ -5,6 +5,7 @@
 // caller's table holds other keys too.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,10 @@ namespace locus::render::detail {
 // path ("surface[2]", "object[1].children[3]").
 AlgebraicSource read_algebraic_source(TableReader& r, const toml::table& table);
 
-// `clip` = "sphere" (default; clip_radius, clip_center) or "box" (clip_min below clip_max).
-ClipRegion read_clip_region(TableReader& r, const toml::table& table);
+// `clip` = "sphere" (default; clip_radius, clip_center) or "box" (clip_min below clip_max);
+// nothing when the table has none of these keys (the surface is then fitted to its extent:
+// render/framing.h).
+std::optional<ClipRegion> read_clip_region(TableReader& r, const toml::table& table);
 
 // color, inside, ambient, diffuse, specular, shininess, checker, checker_size on top of
 // `start`, the default of what the material is for. `inside` defaults to `color` when `color`

@@ -1,6 +1,8 @@
 #include "render/sdf/node_reader.h"
 
+#include <chrono>
 #include <map>
+#include <optional>
 
 #include "render/detail/surface_keys.h"
 #include "render/detail/toml_reader.h"
@@ -10,6 +12,7 @@
 #include "render/sdf/domain.h"
 #include "render/sdf/primitives.h"
 #include "render/sdf/transforms.h"
+#include "render/surface_extent.h"
 
 namespace locus::render::sdf {
 
@@ -30,8 +33,9 @@ const Material kPrimitiveMaterial = Material::plain({0.75, 0.75, 0.78});
 class Reader {
   public:
     Reader(const toml::table* materials, const SurfaceCompiler& compile, TraceMethod method,
+           std::optional<std::chrono::steady_clock::time_point> deadline,
            std::vector<std::string>& notes)
-        : compile_(compile), method_(method) {
+        : compile_(compile), method_(method), deadline_(deadline) {
         if (materials == nullptr) {
             return;
         }
@@ -124,11 +128,16 @@ class Reader {
 
     NodePtr algebraic(TableReader& r, const toml::table& table, const MaterialPtr& material) {
         const AlgebraicSource source = detail::read_algebraic_source(r, table);
-        const ClipRegion region = detail::read_clip_region(r, table);
+        const std::optional<ClipRegion> given = detail::read_clip_region(r, table);
         if (!compile_) {
             throw InputError(source.key, "algebraic leaves need a surface compiler");
         }
         auto compiled = std::make_shared<const algebra::CompiledPolynomial>(compile_(source));
+        // Without clip keys, as for [[surface]] tables: fitted to a bounded surface's extent.
+        const ClipRegion region =
+            given ? *given
+                  : fitted_clip_sphere(estimate_extent(*compiled, 1024, deadline_))
+                        .value_or(ClipSphere{});
         // Without a material, the two-sided default (orange outside, blue inside).
         return make_algebraic(std::move(compiled), region,
                               material ? material : std::make_shared<const Material>(), method_);
@@ -307,14 +316,16 @@ class Reader {
     std::map<std::string, MaterialPtr> materials_;
     const SurfaceCompiler& compile_;
     TraceMethod method_;
+    std::optional<std::chrono::steady_clock::time_point> deadline_;
 };
 
 }  // namespace
 
 std::vector<NodePtr> read_objects(const toml::array& objects, const toml::table* materials,
                                   const SurfaceCompiler& compile, TraceMethod method,
+                                  std::optional<std::chrono::steady_clock::time_point> deadline,
                                   std::vector<std::string>& notes) {
-    Reader reader(materials, compile, method, notes);
+    Reader reader(materials, compile, method, deadline, notes);
     std::vector<NodePtr> nodes;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         nodes.push_back(

@@ -109,6 +109,27 @@ expect "turntable: frame 1 is the still image" 0 "" -- cmp "$tmp/still.png" "$tm
 expect "turntable: frame 2 is turned" 1 "" -- cmp -s "$tmp/still.png" "$tmp/turn_0002.png"
 expect "turntable: a count of 0" 2 "--turntable '0': expected a frame count from 1 to 100000" -- \
     "$locus" render "x^2+y^2+z^2-1" -o "$tmp/turn.png" --turntable 0
+# Framing: a torus with R = 3 lies outside the default clip sphere (radius 2), so it is framed
+# on its extent; --fit replaces a scene file's clip and camera.
+torus3='(x^2+y^2+z^2+8)^2-36*(x^2+y^2)'
+framed=$("$locus" render "$torus3" -o "$tmp/torus3.png" --size 24x24 2>&1)
+if grep -q "no ray hit" <<<"$framed" || ! grep -q " hits" <<<"$framed"; then
+    fail "a torus with R = 3 is framed without flags"; echo "$framed" | head -3
+else
+    echo "ok   a torus with R = 3 is framed without flags"; passes=$((passes + 1))
+fi
+printf '[[surface]]\nequation = "%s"\nclip_radius = 1\n[camera]\neye = [0, 0, 30]\n' "$torus3" \
+    >"$tmp/torus3.toml"
+expect "a scene clipped away says so" 0 "no point of it was found inside its clip region" -- \
+    "$locus" render "$tmp/torus3.toml" -o "$tmp/torus3.png" --size 24x24
+fitted=$("$locus" render "$tmp/torus3.toml" --fit -o "$tmp/torus3.png" --size 24x24 2>&1)
+if grep -q "no ray hit" <<<"$fitted"; then
+    fail "--fit replaces the scene's clip region"; echo "$fitted" | head -3
+else
+    echo "ok   --fit replaces the scene's clip region"; passes=$((passes + 1))
+fi
+expect "--fit on an unbounded surface warns" 0 "is not bounded" -- \
+    "$locus" render "x^2+y^2-1" --fit -o "$tmp/cylinder.png" --size 16x16
 expect "square-free part reported" 0 "rendering its square-free part x^2+y^2+z^2-1" -- \
     "$locus" render "(x^2+y^2+z^2-1)^2" -o "$tmp/squared.png" --size 16x16
 expect "render AOVs" 0 "wrote $tmp/aov.depth.exr" -- \

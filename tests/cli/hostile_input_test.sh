@@ -185,8 +185,15 @@ expect "ideal eliminate F x,x" 2 "found 'x0' a second time" -- "$locus" ideal el
 printf '[[surface]]\nequation = "%s"\n[camera]\neye = [1, nan, 1]\n' "$sphere" >"$tmp/nan.toml"
 expect "a NaN vector element" 2 "camera.eye: expected an array of three finite numbers, found nan" -- \
     "$locus" render "$tmp/nan.toml" -o "$tmp/s.png"
-expect "an empty picture says why" 0 "warning: no ray hit a surface" -- \
-    "$locus" render "x^2+y^2+z^2-100" --size 32x32 -o "$tmp/empty.png"
+expect "an empty picture says why: outside the clip region" 0 \
+    "no point of it was found inside its clip region, the sphere of radius 2 about (0, 0, 0)" -- \
+    "$locus" render "x^2+y^2+z^2-100" --size 32x32 --clip-radius 2 -o "$tmp/empty.png"
+expect "an empty picture says why: behind the camera" 0 "lies behind the camera" -- \
+    "$locus" render "x^2+y^2+z^2-1" --size 32x32 --eye 0,0,5 --target 0,0,9 -o "$tmp/empty.png"
+expect "an empty picture says why: no real point" 0 "no real point of it was found" -- \
+    "$locus" render "x^2+y^2+z^2+1" --size 32x32 -o "$tmp/empty.png"
+expect "--fit with --clip-radius" 2 "--fit and --clip-radius: give one" -- \
+    "$locus" render "x^2+y^2+z^2-1" --fit --clip-radius 3 -o "$tmp/empty.png"
 
 ## 9. Exit codes: the table, and library input errors as input errors.
 expect "the exit-code table is in --help" 0 "5 a resource limit" -- "$locus" --help

@@ -1,0 +1,93 @@
+#include "render/framing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace locus::render {
+
+namespace {
+
+std::string format_point(const Vec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x, p.y, p.z);
+    return text;
+}
+
+std::string describe(const ClipRegion& region) {
+    if (const auto* sphere = std::get_if<ClipSphere>(&region)) {
+        char text[48];
+        std::snprintf(text, sizeof text, "the sphere of radius %.4g about ", sphere->radius);
+        return text + format_point(sphere->center);
+    }
+    const auto& box = std::get<ClipBox>(region);
+    return "the box from " + format_point(box.min) + " to " + format_point(box.max);
+}
+
+}  // namespace
+
+std::vector<std::optional<SurfaceExtent>> fit_clip_regions(
+    Scene& scene, std::span<const algebra::CompiledPolynomial> surfaces, bool force,
+    std::optional<std::chrono::steady_clock::time_point> deadline) {
+    std::vector<std::optional<SurfaceExtent>> extents(scene.surfaces.size());
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        Surface& surface = scene.surfaces[i];
+        if (!force && !surface.fit_clip) {
+            continue;
+        }
+        extents[i] = estimate_extent(surfaces[i], 1024, deadline);
+        surface.clip = fitted_clip_sphere(*extents[i]).value_or(ClipSphere{});
+    }
+    return extents;
+}
+
+std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomial& f,
+                        const CameraSpec& camera, int width, int height,
+                        std::optional<SurfaceExtent> extent,
+                        std::optional<std::chrono::steady_clock::time_point> deadline) {
+    if (!extent) {
+        extent = estimate_extent(f, 1024, deadline);
+    }
+    if (extent->kind == SurfaceExtent::Kind::none_found) {
+        return "no real point of it was found on " + std::to_string(extent->lines) +
+               " lines through it (it may have none, as x^2+y^2+z^2+1 has none)";
+    }
+    const std::optional<ClipBox> inside = box_in_region(f, surface.clip, 1024, deadline);
+    if (!inside) {
+        std::string where;
+        if (extent->kind == SurfaceExtent::Kind::bounded) {
+            where = "; the points found elsewhere span " + format_point(extent->low) + " to " +
+                    format_point(extent->high) + " (--fit frames it)";
+        }
+        return "no point of it was found inside its clip region, " + describe(surface.clip) + where;
+    }
+    const ClipSphere visible = bounding_sphere(ClipRegion(*inside));
+    const Vec3 forward = glm::normalize(camera.target - camera.eye);
+    const Vec3 to_centre = visible.center - camera.eye;
+    const double distance = glm::length(to_centre);
+    const double along = glm::dot(to_centre, forward);
+    if (along < -visible.radius) {
+        return "what can be seen of it, about " + format_point(visible.center) +
+               ", lies behind the camera (eye " + format_point(camera.eye) + ", looking at " +
+               format_point(camera.target) + ")";
+    }
+    if (distance > visible.radius) {
+        // Half the diagonal field of view against the angle to the visible part's centre less
+        // the angle it subtends.
+        const double tan_half = std::tan(camera.fov_degrees * std::numbers::pi / 360.0);
+        const double aspect = static_cast<double>(width) / height;
+        const double half_diagonal = std::atan(tan_half * std::sqrt(1.0 + aspect * aspect));
+        const double off_axis = std::acos(std::clamp(along / distance, -1.0, 1.0));
+        const double subtended = std::asin(std::min(1.0, visible.radius / distance));
+        if (off_axis - subtended > half_diagonal) {
+            return "what can be seen of it, about " + format_point(visible.center) +
+                   ", lies outside the camera's field of view (eye " + format_point(camera.eye) +
+                   ", looking at " + format_point(camera.target) + ")";
+        }
+    }
+    return "no pixel's ray met it inside its clip region, " + describe(surface.clip) +
+           ": it may be thinner than a pixel there (try --samples or a closer --eye)";
+}
+
+}  // namespace locus::render

@@ -1,0 +1,37 @@
+// Framing a scene on what it shows: clip spheres fitted to the surfaces' extents (the default
+// for a surface given without clip keys, and `locus render --fit`), and the reason a picture
+// came out empty.
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "algebra/compiled.h"
+#include "render/scene.h"
+#include "render/surface_extent.h"
+
+namespace locus::render {
+
+// Gives every surface with `fit_clip` set (or every surface when `force`) the clip sphere
+// fitted to its extent when that is bounded, and leaves the others as they are (a surface that
+// is not bounded keeps ClipSphere{}, the documented default). Returns the extents estimated,
+// one per surface (nothing where none was needed). Precondition: one compiled polynomial per
+// surface. Throws Timeout when `deadline` passes.
+std::vector<std::optional<SurfaceExtent>> fit_clip_regions(
+    Scene& scene, std::span<const algebra::CompiledPolynomial> surfaces, bool force,
+    std::optional<std::chrono::steady_clock::time_point> deadline = {});
+
+// Why no primary ray met `surface` through `camera`, in words for stderr: no point of the
+// surface was found at all, or none inside its clip region (box_in_region), or the part inside
+// lies behind the camera or outside its field of view; otherwise that it is too thin or small
+// for the pixel grid. `extent` is the surface's, estimated here when not given. Throws Timeout
+// when `deadline` passes.
+std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomial& f,
+                        const CameraSpec& camera, int width, int height,
+                        std::optional<SurfaceExtent> extent = {},
+                        std::optional<std::chrono::steady_clock::time_point> deadline = {});
+
+}  // namespace locus::render

@@ -1,0 +1,213 @@
+// Surface extents and framing (render/surface_extent.h, render/framing.h), against boxes known
+// in closed form: spheres, a torus, and random rotated ellipsoids whose box is
+// c ± (Σ_k (R_jk·a_k)²)^{1/2} per axis, computed from the rotation and axes, not from f.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "algebra/compiled.h"
+#include "algebra/error.h"
+#include "render/framing.h"
+#include "render/renderer.h"
+#include "render/scene_file.h"
+#include "render/surface_extent.h"
+
+namespace locus::render {
+namespace {
+
+using Kind = SurfaceExtent::Kind;
+
+void expect_box_near(const SurfaceExtent& extent, const Vec3& low, const Vec3& high,
+                     double tolerance) {
+    ASSERT_EQ(extent.kind, Kind::bounded);
+    for (int j = 0; j < 3; ++j) {
+        EXPECT_NEAR(extent.low[j], low[j], tolerance) << "axis " << j;
+        EXPECT_NEAR(extent.high[j], high[j], tolerance) << "axis " << j;
+    }
+}
+
+TEST(SurfaceExtent, SpheresAndATorusHaveTheirBoxes) {
+    expect_box_near(estimate_extent(algebra::compile_surface("x^2+y^2+z^2-1")), Vec3(-1.0),
+                    Vec3(1.0), 0.01);
+    // Centred away from the origin: the second round starts inside it.
+    expect_box_near(estimate_extent(algebra::compile_surface("(x-3)^2+(y+2)^2+(z-1)^2-1")),
+                    {2.0, -3.0, 0.0}, {4.0, -1.0, 2.0}, 0.01);
+    // R = 3, r = 1: outside the default clip sphere of radius 2.
+    expect_box_near(estimate_extent(algebra::compile_surface("(x^2+y^2+z^2+8)^2-36*(x^2+y^2)")),
+                    {-4.0, -4.0, -1.0}, {4.0, 4.0, 1.0}, 0.03);
+}
+
+TEST(SurfaceExtent, SurfacesThatReachInfinityAreNotBounded) {
+    for (const char* equation : {"x^2+y^2-1",                   // f_d vanishes along z
+                                 "x^3+y^3+z^3-1",               // odd degree
+                                 "x^2+y^2-z^2-1",               // f_d changes sign
+                                 "x^4+y^4+z^4-x^2*y^2*z^2"}) {  // top form x²y²z² indefinite
+        EXPECT_EQ(estimate_extent(algebra::compile_surface(equation)).kind, Kind::unbounded)
+            << equation;
+    }
+}
+
+TEST(SurfaceExtent, ASurfaceWithoutRealPointsHasNoneFound) {
+    const SurfaceExtent extent = estimate_extent(algebra::compile_surface("x^2+y^2+z^2+1"));
+    EXPECT_EQ(extent.kind, Kind::none_found);
+    EXPECT_EQ(extent.lines, 1024);
+    EXPECT_FALSE(fitted_clip_sphere(extent).has_value());
+}
+
+// x^T M x − 2 (M c)^T x + c^T M c − 1 for M = R diag(1/a²) R^T, as an equation over Q.
+std::string ellipsoid_equation(const double rotation[3][3], const Vec3& axes, const Vec3& centre) {
+    double m[3][3];
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            m[i][j] = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                m[i][j] += rotation[i][k] * rotation[j][k] / (axes[k] * axes[k]);
+            }
+        }
+    }
+    const char* names = "xyz";
+    std::string f;
+    char term[96];
+    double constant = -1.0;
+    for (int i = 0; i < 3; ++i) {
+        double linear = 0.0;
+        for (int j = 0; j < 3; ++j) {
+            linear -= 2.0 * m[i][j] * centre[j];
+            constant += centre[i] * m[i][j] * centre[j];
+            if (j >= i) {
+                std::snprintf(term, sizeof term, "+(%.17g)*%c*%c", (i == j ? 1.0 : 2.0) * m[i][j],
+                              names[i], names[j]);
+                f += term;
+            }
+        }
+        std::snprintf(term, sizeof term, "+(%.17g)*%c", linear, names[i]);
+        f += term;
+    }
+    std::snprintf(term, sizeof term, "+(%.17g)", constant);
+    return f + term;
+}
+
+TEST(SurfaceExtent, RandomEllipsoidsAreInsideTheirFittedSpheres) {
+    std::mt19937_64 random(20261126);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), axis(0.1, 4.0), offset(-3.0, 3.0);
+    for (int trial = 0; trial < 40; ++trial) {
+        // A random rotation from a random unit quaternion.
+        double q[4], norm = 0.0;
+        for (double& v : q) {
+            v = unit(random);
+            norm += v * v;
+        }
+        for (double& v : q) {
+            v /= std::sqrt(norm);
+        }
+        const double w = q[0], x = q[1], y = q[2], z = q[3];
+        const double rotation[3][3] = {
+            {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+            {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+            {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+        const Vec3 axes{axis(random), axis(random), axis(random)};
+        const Vec3 centre{offset(random), offset(random), offset(random)};
+        const std::string equation = ellipsoid_equation(rotation, axes, centre);
+        const SurfaceExtent extent = estimate_extent(algebra::compile_surface(equation));
+        ASSERT_EQ(extent.kind, Kind::bounded) << equation;
+        const std::optional<ClipSphere> fitted = fitted_clip_sphere(extent);
+        ASSERT_TRUE(fitted.has_value());
+        for (int j = 0; j < 3; ++j) {
+            double half = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                half += std::pow(rotation[j][k] * axes[k], 2);
+            }
+            half = std::sqrt(half);
+            // Every point found is on the surface, so inside the true box ...
+            EXPECT_GE(extent.low[j], centre[j] - half - 1e-9) << equation;
+            EXPECT_LE(extent.high[j], centre[j] + half + 1e-9) << equation;
+            // ... and the lines, with the faces refined, reach 99.9 % of it.
+            EXPECT_LE(extent.high[j] - extent.low[j], 2.0 * half) << equation;
+            EXPECT_GE(extent.high[j] - extent.low[j], 0.999 * 2.0 * half) << equation;
+        }
+        // The whole ellipsoid is inside the fitted sphere: its farthest point from the
+        // sphere's centre c' is at most |c − c'| + the largest axis away.
+        const double largest_axis = std::max({axes.x, axes.y, axes.z});
+        EXPECT_LE(glm::length(centre - fitted->center) + largest_axis, fitted->radius * 1.0001)
+            << equation;
+    }
+}
+
+TEST(SurfaceExtent, ThePastDeadlineStopsTheSearch) {
+    EXPECT_THROW(estimate_extent(algebra::compile_surface("x^2+y^2+z^2-1"), 1024,
+                                 std::chrono::steady_clock::now() - std::chrono::seconds(1)),
+                 Timeout);
+}
+
+TEST(Framing, ATorusOutsideTheDefaultClipSphereIsFramedOnItsExtent) {
+    Scene scene;
+    scene.width = scene.height = 24;
+    Surface torus;
+    torus.equation = "(x^2+y^2+z^2+8.19)^2-36*(x^2+y^2)";  // R = 3, r = 0.9
+    scene.surfaces.push_back(torus);
+    const algebra::CompiledPolynomial compiled[] = {algebra::compile_surface(torus.equation)};
+    RenderStats at_default;
+    render(scene, compiled, {}, &at_default);
+    EXPECT_EQ(at_default.hits, 0);  // the clip sphere of radius 2 lies in the hole
+    const auto extents = fit_clip_regions(scene, compiled, false);
+    ASSERT_TRUE(extents[0].has_value());
+    const ClipSphere fitted = std::get<ClipSphere>(scene.surfaces[0].clip);
+    EXPECT_NEAR(fitted.radius, 1.05 * std::sqrt(2 * 3.9 * 3.9 + 0.81), 0.2);
+    RenderStats framed;
+    render(scene, compiled, {}, &framed);
+    EXPECT_GT(framed.hits, 24 * 24 / 8);
+}
+
+TEST(Framing, AGivenClipRegionIsKeptUnlessForced) {
+    Scene scene = parse_scene(
+        "[[surface]]\nequation = \"x^2+y^2+z^2-1\"\nclip_radius = 0.5\n"
+        "[[surface]]\nequation = \"x^2+y^2+z^2-4\"\n");
+    EXPECT_FALSE(scene.surfaces[0].fit_clip);
+    EXPECT_TRUE(scene.surfaces[1].fit_clip);
+    const algebra::CompiledPolynomial compiled[] = {
+        algebra::compile_surface(scene.surfaces[0].equation),
+        algebra::compile_surface(scene.surfaces[1].equation)};
+    Scene fitted = scene;
+    const auto extents = fit_clip_regions(fitted, compiled, false);
+    EXPECT_FALSE(extents[0].has_value());
+    EXPECT_EQ(std::get<ClipSphere>(fitted.surfaces[0].clip).radius, 0.5);
+    EXPECT_NEAR(std::get<ClipSphere>(fitted.surfaces[1].clip).radius, 1.05 * 2.0 * std::sqrt(3.0),
+                0.05);
+    fit_clip_regions(scene, compiled, true);
+    EXPECT_NEAR(std::get<ClipSphere>(scene.surfaces[0].clip).radius, 1.05 * std::sqrt(3.0), 0.03);
+}
+
+TEST(Framing, AnEmptyPictureIsExplained) {
+    Surface sphere;
+    sphere.equation = "x^2+y^2+z^2-1";
+    const algebra::CompiledPolynomial unit = algebra::compile_surface(sphere.equation);
+    CameraSpec camera;  // eye (0, 0, 5) looking at the origin
+    sphere.clip = ClipSphere{{0.0, 0.0, 0.0}, 0.5};
+    EXPECT_NE(why_not_hit(sphere, unit, camera, 32, 32).find("no point of it was found inside"),
+              std::string::npos);
+    sphere.clip = ClipSphere{};
+    CameraSpec away = camera;
+    away.target = {0.0, 0.0, 9.0};
+    EXPECT_NE(why_not_hit(sphere, unit, away, 32, 32).find("behind the camera"), std::string::npos);
+    away.target = {10.0, 0.0, 5.0};
+    EXPECT_NE(why_not_hit(sphere, unit, away, 32, 32).find("outside the camera's field of view"),
+              std::string::npos);
+    Surface imaginary;
+    imaginary.equation = "x^2+y^2+z^2+1";
+    EXPECT_NE(why_not_hit(imaginary, algebra::compile_surface(imaginary.equation), camera, 32, 32)
+                  .find("no real point of it was found"),
+              std::string::npos);
+    // A cylinder (not bounded) clipped away from its wall.
+    Surface cylinder;
+    cylinder.equation = "x^2+y^2-1";
+    cylinder.clip = ClipBox{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}};
+    const std::string reason =
+        why_not_hit(cylinder, algebra::compile_surface(cylinder.equation), camera, 32, 32);
+    EXPECT_NE(reason.find("inside its clip region, the box from"), std::string::npos) << reason;
+}
+
+}  // namespace
+}  // namespace locus::render
