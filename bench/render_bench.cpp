@@ -11,7 +11,7 @@
 // `locus render` makes it (its default method, shading without shadows, one sample, all
 // cores). Both are the median of repeated runs, which shrugs off runs slowed by other work on a
 // shared machine, and the two programs take turns (time_side_by_side) so that both see the same
-// spells of load.
+// spells of load. `--whole-process` times the commands instead (bench/render_whole_process.h).
 
 #include <unistd.h>
 
@@ -28,6 +28,8 @@
 #include "algebra/error.h"
 #include "bench/bench_options.h"
 #include "bench/benches.h"
+#include "bench/render_whole_process.h"
+#include "bench/surf_run.h"
 #include "bench/surface_suite.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
@@ -50,7 +52,22 @@ struct RenderBenchArgs {
     int size = 128;                        // size×size primary rays per surface
     int threads = 1;                       // the speed targets are single-core figures
     std::string surf = "surf-alggeo-nox";  // same-run reference renderer, or "off"
+    bool whole_process = false;            // time `locus render` and surf as whole processes
+    std::string locus;                     // the locus executable (empty: beside locus-bench)
 };
+
+// build/…/bench/locus-bench → build/…/cli/locus when that exists, else `locus` on the PATH.
+std::string default_locus_executable() {
+    std::error_code error;
+    const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const auto sibling = self.parent_path().parent_path() / "cli" / "locus";
+        if (std::filesystem::exists(sibling, error)) {
+            return sibling.string();
+        }
+    }
+    return "locus";
+}
 
 std::vector<SuiteSurface> read_suite(const std::string& path) {
     try {
@@ -59,78 +76,6 @@ std::vector<SuiteSurface> read_suite(const std::string& path) {
         throw CommandFailure(exit_input, path + ": " + e.what());
     }
 }
-
-// The median and the fastest of repeated runs. The median shrugs off runs slowed several-fold
-// by other work on a shared machine; the fastest is the run least disturbed (noise only ever
-// adds time), and moves less from one benchmark run to the next.
-struct RunTimes {
-    double median = -1.0;
-    double best = -1.0;
-};
-
-// The median and the fastest of `times` (not empty).
-RunTimes summary_of(std::vector<double> times) {
-    std::sort(times.begin(), times.end());
-    const std::size_t middle = times.size() / 2;
-    return RunTimes{
-        times.size() % 2 == 1 ? times[middle] : 0.5 * (times[middle - 1] + times[middle]),
-        times.front()};
-}
-
-// One run of surf on the surface at size×size: drawing it (and saving the picture), or, for the
-// start-up that is subtracted, only reading the same script. Seconds, or negative when surf
-// fails or leaves no picture.
-class SurfRun {
-  public:
-    SurfRun(std::string surf, const SuiteSurface& s, int size)
-        : surf_(std::move(surf)), surface_(s), size_(size) {
-        const auto dir = std::filesystem::temp_directory_path();
-        const std::string stem = "locus-surf-" + std::to_string(::getpid());
-        script_ = dir / (stem + ".pic");
-        image_ = dir / (stem + ".ppm");
-    }
-    ~SurfRun() {
-        std::error_code ignored;
-        std::filesystem::remove(script_, ignored);
-        std::filesystem::remove(image_, ignored);
-    }
-    SurfRun(const SurfRun&) = delete;
-    SurfRun& operator=(const SurfRun&) = delete;
-
-    double operator()(bool draw) const {
-        {
-            std::ofstream out(script_);
-            // surf's view spans about ±10/scale world units and its clip radius is in those
-            // screen units: this frames the clip sphere as locus' default camera does.
-            const double scale = 0.1126 * surface_.clip_radius;
-            out << "width = " << size_ << ";\nheight = " << size_ << ";\n"
-                << "clip = sphere;\nradius = " << surface_.clip_radius / scale << ";\n"
-                << "scale_x = " << scale << ";\nscale_y = " << scale << ";\nscale_z = " << scale
-                << ";\n"
-                << "surface = " << surface_.equation << ";\n";
-            if (draw) {
-                out << "clear_screen;\ndraw_surface;\nfilename = \"" << image_.string()
-                    << "\";\ncolor_file_format = ppm;\nsave_color_image;\n";
-            }
-        }
-        std::error_code ignored;
-        std::filesystem::remove(image_, ignored);
-        const std::string command =
-            "timeout 120 " + surf_ + " -n " + script_.string() + " >/dev/null 2>&1";
-        const auto start = std::chrono::steady_clock::now();
-        const int status = std::system(command.c_str());
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const bool ok = status == 0 && (!draw || std::filesystem::exists(image_));
-        return ok ? seconds : -1.0;
-    }
-
-  private:
-    std::string surf_;
-    const SuiteSurface& surface_;
-    int size_;
-    std::filesystem::path script_, image_;
-};
 
 // locus' picture and surf's, each the median (and the fastest) of repeated runs.
 struct Comparison {
@@ -269,6 +214,14 @@ int run_render_bench(const RenderBenchArgs& args) {
         }
     }
     const bool with_surf = args.surf != "off" && on_path(args.surf);
+    if (args.whole_process) {
+        if (!with_surf && args.surf != "off") {
+            std::fprintf(stderr, "surf not found: locus alone (install Debian's surf-alggeo)\n");
+        }
+        return run_whole_process_comparison(
+            suite, {args.size, args.locus.empty() ? default_locus_executable() : args.locus,
+                    with_surf ? args.surf : "", args.suite.min_seconds, args.suite.csv});
+    }
     if (args.suite.csv) {
         std::cout << "case,degree,method,setting,tolerance,rays,seconds,rays_per_second,"
                      "work_per_ray,wrong_rays,wrong_share,unknown_rays,max_depth_error,"
@@ -402,6 +355,12 @@ void add_render_bench(CLI::App& app, cli::CommandContext& context) {
     add_threads_option(cmd, args->threads);
     cmd->add_option("--methods", args->methods, "only these trace methods")->delimiter(',');
     cmd->add_option("--surf", args->surf, "surf executable for the same-run reference, or 'off'");
+    cmd->add_flag("--whole-process", args->whole_process,
+                  "time `locus render EQUATION -o F.png` and surf as whole processes, start-up "
+                  "and writing included (use with --size 512)");
+    cmd->add_option("--locus", args->locus,
+                    "the locus executable for --whole-process (default: the build's, beside "
+                    "locus-bench)");
 }
 
 }  // namespace locus::bench
