@@ -39,6 +39,9 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     const int k = scene.options.samples;
     detail::FrameCounters frame;
 
+    // The change of a primary ray's direction to the next sample across and down.
+    const Vec3 step_x = camera.per_column() / static_cast<double>(k);
+    const Vec3 step_y = camera.per_row() / static_cast<double>(k);
     auto render_row = [&](int y) {
         std::vector<PrimaryTracer::Row> rows(surfaces.size());
         long row_hits = 0, row_unknown = 0, row_work = 0;
@@ -79,7 +82,8 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         const std::uint64_t seed =
                             (static_cast<std::uint64_t>(y) * scene.width + x) * 64 +
                             static_cast<std::uint64_t>(sy * k + sx);
-                        const ShadingResult shading = shader.shade(ray, best, best_t, seed);
+                        const ShadingResult shading =
+                            shader.shade(ray, best, best_t, seed, {ray.direction, step_x, step_y});
                         sums[column] += shading.color;
                         work[column] += shading.work;
                         const double distance = best_t * glm::length(ray.direction);

@@ -110,7 +110,8 @@ double Shader::ambient_occlusion(const Vec3& point, const Vec3& normal, std::uin
     return static_cast<double>(open) / samples;
 }
 
-ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed) const {
+ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed,
+                            const SampleDirections& sample) const {
     const ShadedSurface& surface = surfaces_[index];
     const Vec3 point = ray.at(t);
     const Vec3 view = -glm::normalize(ray.direction);
@@ -119,7 +120,9 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
     // A pattern is decided just inside the surface (against the outward normal), the same
     // for every pixel of a flat cell boundary.
     const Vec3 outward = side.outside ? side.normal : -side.normal;
-    const Material material = surface.material.at(point - (1e-6 * scale_) * outward);
+    const Material material = surface.material.at(
+        point - (1e-6 * scale_) * outward,
+        surface_footprint(ray.origin, sample, point, side.normal, 1e6 * scale_));
     ShadingResult result;
     const double ambient_factor =
         options_.ambient_occlusion ? ambient_occlusion(point, side.normal, seed, result.work) : 1.0;

@@ -35,8 +35,11 @@ class Shader {
            const RenderOptions& options, double scale);
 
     // Shades the hit of `ray` with surface `index` at parameter t; `seed` decorrelates the
-    // stochastic directions of soft shadows and occlusion between pixels.
-    ShadingResult shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed) const;
+    // stochastic directions of soft shadows and occlusion between pixels. `sample` (the ray's
+    // direction and its steps to the neighbouring samples) sets the footprint over which a
+    // pattern is filtered.
+    ShadingResult shade(const Ray& ray, std::size_t index, double t, std::uint64_t seed,
+                        const SampleDirections& sample) const;
 
   private:
     // Fraction of `light` visible from `point` (1 unlit by nothing, 0 fully in shadow).

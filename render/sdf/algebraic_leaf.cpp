@@ -43,7 +43,9 @@ class AlgebraicLeaf final : public Node {
             length > 0.0 ? vg.value / length : std::copysign(INFINITY, vg.value);
         return std::max(clip_distance(clip_, p), estimate);
     }
-    Material material_at(const Vec3& p) const override { return material_->at(p); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return material_->at(p, footprint);
+    }
     Vec3 gradient(const Vec3& p, double) const override {
         return to_vec(f_->value_gradient(to_point(p)).gradient);
     }

@@ -75,11 +75,11 @@ class Boolean final : public Node {
         }
     }
 
-    double value(const Vec3& p) const override { return fold(p, nullptr); }
+    double value(const Vec3& p) const override { return fold(p, nullptr, {}); }
 
-    Material material_at(const Vec3& p) const override {
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
         Material material;
-        fold(p, &material);
+        fold(p, &material, footprint);
         return material;
     }
 
@@ -97,10 +97,10 @@ class Boolean final : public Node {
   private:
     // The folded value; with `material`, also the folded material (mixed by the blend
     // weights).
-    double fold(const Vec3& p, Material* material) const {
+    double fold(const Vec3& p, Material* material, const Footprint& footprint) const {
         double acc = children_[0]->value(p) * inverse_lipschitz_[0];
         if (material != nullptr) {
-            *material = children_[0]->material_at(p);
+            *material = children_[0]->material_at(p, footprint);
         }
         for (std::size_t i = 1; i < children_.size(); ++i) {
             const double c = children_[i]->value(p) * inverse_lipschitz_[i];
@@ -139,7 +139,7 @@ class Boolean final : public Node {
                 weight = b.weight_of_b;
             }
             if (material != nullptr && weight > 0.0) {
-                *material = mix(*material, children_[i]->material_at(p), weight);
+                *material = mix(*material, children_[i]->material_at(p, footprint), weight);
             }
         }
         return acc;

@@ -71,7 +71,10 @@ class Warp final : public Unary {
         }
         return std::max(child_->value(warped(q)) * scale_, r - radius_);
     }
-    Material material_at(const Vec3& p) const override { return child_->material_at(warped(p)); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(
+            warped(p), mapped_footprint(footprint, p, [this](const Vec3& q) { return warped(q); }));
+    }
     std::string_view type() const override { return warp_ == Kind::twist ? "twist" : "bend"; }
 
   private:
@@ -108,7 +111,9 @@ class Round final : public Unary {
         return at_least_box_distance(child_->value(p) * inverse_lipschitz_, child_box_, p) -
                radius_;
     }
-    Material material_at(const Vec3& p) const override { return child_->material_at(p); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(p, footprint);
+    }
     std::string_view type() const override { return "round"; }
 
   private:
@@ -123,7 +128,9 @@ class Elongate final : public Unary {
         bounds_ = {bounds_.min - half, bounds_.max + half};
     }
     double value(const Vec3& p) const override { return child_->value(squeezed(p)); }
-    Material material_at(const Vec3& p) const override { return child_->material_at(squeezed(p)); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(squeezed(p), footprint);
+    }
     std::string_view type() const override { return "elongate"; }
 
   private:
@@ -146,7 +153,9 @@ class Displace final : public Unary {
         return at_least_box_distance(child_->value(p) * inverse_lipschitz_, child_box_, p) +
                noise_.value(p);
     }
-    Material material_at(const Vec3& p) const override { return child_->material_at(p); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(p, footprint);
+    }
     std::string_view type() const override { return "displace"; }
 
   private:

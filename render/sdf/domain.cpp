@@ -25,7 +25,9 @@ class MirrorAxes final : public Node {
         }
     }
     double value(const Vec3& p) const override { return child_->value(folded(p)); }
-    Material material_at(const Vec3& p) const override { return child_->material_at(folded(p)); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(folded(p), footprint);
+    }
     std::string_view type() const override { return "mirror"; }
 
   private:
@@ -61,7 +63,9 @@ class MirrorPlane final : public Node {
         }
     }
     double value(const Vec3& p) const override { return child_->value(folded(p)); }
-    Material material_at(const Vec3& p) const override { return child_->material_at(folded(p)); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(folded(p), footprint);
+    }
     std::string_view type() const override { return "mirror_plane"; }
 
   private:
@@ -112,7 +116,7 @@ class Repeat final : public Node {
               [&](const Vec3& q) { best = std::min(best, child_->value(q) * inverse_lipschitz_); });
         return best;
     }
-    Material material_at(const Vec3& p) const override {
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
         double best = INFINITY;
         Vec3 nearest = p;
         visit(p, [&](const Vec3& q) {
@@ -122,7 +126,7 @@ class Repeat final : public Node {
                 nearest = q;
             }
         });
-        return child_->material_at(nearest);
+        return child_->material_at(nearest, footprint);
     }
     std::string_view type() const override { return "repeat"; }
 

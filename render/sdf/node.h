@@ -53,6 +53,14 @@ using MaterialPtr = std::shared_ptr<const Material>;
 class Node;
 using NodePtr = std::shared_ptr<const Node>;
 
+// The footprint at p carried through a coordinate map (first order: the images of p + dx and
+// p + dy less the image of p; exact for placements).
+template <class Map>
+Footprint mapped_footprint(const Footprint& footprint, const Vec3& p, const Map& map) {
+    const Vec3 at = map(p);
+    return {map(p + footprint.dx) - at, map(p + footprint.dy) - at};
+}
+
 class Node {
   public:
     virtual ~Node() = default;
@@ -60,8 +68,10 @@ class Node {
     // The field value at p.
     virtual double value(const Vec3& p) const = 0;
     // The resolved material of the surface near p (the child that wins a boolean, a blend of
-    // both in a smooth one).
-    virtual Material material_at(const Vec3& p) const = 0;
+    // both in a smooth one), its pattern filtered over `footprint` (in p's coordinates; zero
+    // for a point sample). Nodes that move their child's coordinates map the footprint with
+    // them (mapped_footprint); folds pass it on, as they preserve lengths.
+    virtual Material material_at(const Vec3& p, const Footprint& footprint) const = 0;
     // ∇f at p; by tetrahedral central differences of step h unless a node knows better
     // (transforms rotate their child's gradient; algebraic leaves use the analytic one).
     virtual Vec3 gradient(const Vec3& p, double h) const;

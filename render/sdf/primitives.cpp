@@ -17,7 +17,9 @@ double dot2(double x, double y) {
 class Leaf : public Node {
   public:
     explicit Leaf(MaterialPtr material) : material_(std::move(material)) {}
-    Material material_at(const Vec3& p) const override { return material_->at(p); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return material_->at(p, footprint);
+    }
 
   protected:
     MaterialPtr material_;

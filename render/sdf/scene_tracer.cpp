@@ -321,8 +321,8 @@ Vec3 SceneTracer::normal(int item, const Vec3& p, double h) const {
     return items_[static_cast<std::size_t>(item)].node->gradient(p, h);
 }
 
-Material SceneTracer::material_at(int item, const Vec3& p) const {
-    return items_[static_cast<std::size_t>(item)].node->material_at(p);
+Material SceneTracer::material_at(int item, const Vec3& p, const Footprint& footprint) const {
+    return items_[static_cast<std::size_t>(item)].node->material_at(p, footprint);
 }
 
 }  // namespace locus::render::sdf

@@ -66,7 +66,7 @@ class SceneTracer {
     // The scene's field: the minimum over items of value/L.
     double value(const Vec3& p, TraceCounters& counters) const;
     Vec3 normal(int item, const Vec3& p, double h) const;
-    Material material_at(int item, const Vec3& p) const;
+    Material material_at(int item, const Vec3& p, const Footprint& footprint) const;
 
     int item_count() const { return static_cast<int>(items_.size()); }
     double scale() const { return scale_; }

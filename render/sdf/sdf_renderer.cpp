@@ -30,8 +30,10 @@ class SdfShader {
         : tracer_(tracer), lights_(lights), options_(options), far_(far) {}
 
     // Colour and unit normal (towards the viewer) of the hit of a unit-direction ray.
-    Vec3 shade(const Ray& ray, const sdf::SceneHit& hit, double epsilon, Vec3& normal,
-               sdf::TraceCounters& counters) const {
+    // `sample`: the unnormalised direction of the sample's ray and its steps to the
+    // neighbouring samples, for the footprint over which patterns are filtered.
+    Vec3 shade(const Ray& ray, const sdf::SceneHit& hit, double epsilon,
+               const SampleDirections& sample, Vec3& normal, sdf::TraceCounters& counters) const {
         const Vec3 point = ray.at(hit.t);
         const Vec3 view = -ray.direction;
         const FacingSide side = facing_side(
@@ -41,7 +43,8 @@ class SdfShader {
         // such as a checker are decided the same way for every pixel of a flat floor.
         const Vec3 outward = side.outside ? side.normal : -side.normal;
         const Material material =
-            tracer_.material_at(hit.item, point - (epsilon + 1e-6 * tracer_.scale()) * outward);
+            tracer_.material_at(hit.item, point - (epsilon + 1e-6 * tracer_.scale()) * outward,
+                                surface_footprint(ray.origin, sample, point, side.normal, far_));
         const double ambient_factor =
             options_.ambient_occlusion ? occlusion(point, side.normal, counters) : 1.0;
         const Vec3 origin = point + (4.0 * epsilon + 1e-6 * tracer_.scale()) * side.normal;
@@ -132,7 +135,10 @@ RenderedImage render_sdf_scene(const Scene& scene,
                     } else {
                         ++row_hits;
                         Vec3 normal;
-                        sum += shader.shade(ray, hit, 0.5 * footprint * hit.t, normal, counters);
+                        sum += shader.shade(ray, hit, 0.5 * footprint * hit.t,
+                                            {d, camera.per_column() / static_cast<double>(k),
+                                             camera.per_row() / static_cast<double>(k)},
+                                            normal, counters);
                         if (hit.t < nearest) {
                             nearest = hit.t;
                             nearest_normal = normal;

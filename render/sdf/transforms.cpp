@@ -59,7 +59,11 @@ class Placement final : public Node {
     }
 
     double value(const Vec3& p) const override { return scale_ * child_->value(to_local(p)); }
-    Material material_at(const Vec3& p) const override { return child_->material_at(to_local(p)); }
+    Material material_at(const Vec3& p, const Footprint& footprint) const override {
+        return child_->material_at(
+            to_local(p),
+            mapped_footprint(footprint, p, [this](const Vec3& q) { return to_local(q); }));
+    }
     Vec3 gradient(const Vec3& p, double h) const override {
         return rotation_ * child_->gradient(to_local(p), h / scale_);
     }

@@ -134,16 +134,16 @@ translate = [-3, 0, 0]
     ASSERT_EQ(tree.objects.size(), 3u);
     ASSERT_EQ(tree.notes.size(), 1u);
     EXPECT_NE(tree.notes[0].find("materials.red.outside: deprecated"), std::string::npos);
-    const Material red = tree.objects[0]->material_at({0, 0.9, 0});
+    const Material red = tree.objects[0]->material_at({0, 0.9, 0}, {});
     const Vec3 grey(0.75, 0.75, 0.78);
     EXPECT_EQ(red.color, Vec3(1, 0, 0));
     EXPECT_EQ(red.inside, grey);
     EXPECT_EQ(red.specular, 0.5);
-    const Material shiny = tree.objects[1]->material_at({3, 0.9, 0});
+    const Material shiny = tree.objects[1]->material_at({3, 0.9, 0}, {});
     EXPECT_EQ(shiny.color, grey);
     EXPECT_EQ(shiny.inside, grey);
     EXPECT_EQ(shiny.specular, 0.9);
-    EXPECT_EQ(tree.objects[2]->material_at({-3, 0.9, 0}).color, grey);
+    EXPECT_EQ(tree.objects[2]->material_at({-3, 0.9, 0}, {}).color, grey);
 }
 
 TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {

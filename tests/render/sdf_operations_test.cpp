@@ -133,11 +133,11 @@ TEST(SdfBooleans, SmoothUnionMixesTheMaterialsAcrossTheSeam) {
     const NodePtr blue = make_placement(make_sphere(1.0, plain_material({0, 0, 1})),
                                         glm::dmat3(1.0), 1.0, {1.6, 0, 0});
     const NodePtr blended = make_smooth_union({red, blue}, {BlendKind::polynomial, 0.5, 2});
-    const Material middle = blended->material_at({0.8, 0.7, 0});
+    const Material middle = blended->material_at({0.8, 0.7, 0}, {});
     EXPECT_NEAR(middle.color.x, 0.5, 1e-12);
     EXPECT_NEAR(middle.color.z, 0.5, 1e-12);
-    EXPECT_EQ(blended->material_at({-1, 0, 0}).color, Vec3(1, 0, 0));
-    EXPECT_EQ(blended->material_at({2.6, 0, 0}).color, Vec3(0, 0, 1));
+    EXPECT_EQ(blended->material_at({-1, 0, 0}, {}).color, Vec3(1, 0, 0));
+    EXPECT_EQ(blended->material_at({2.6, 0, 0}, {}).color, Vec3(0, 0, 1));
 }
 
 TEST(SdfDomain, RepetitionMapsPointsToTheirCell) {
@@ -271,7 +271,8 @@ translate = [0, 1, 0]
     const NodePtr& blend = scene.objects[1];
     EXPECT_LT(blend->value({0, 1, 0}), 0.0);
     EXPECT_GT(blend->value({0, 0, 0}), 0.0);
-    EXPECT_EQ(blend->material_at({0, 1.5, 0}).color, Vec3(0.9, 0.7, 0.2));  // inherited material
+    EXPECT_EQ(blend->material_at({0, 1.5, 0}, {}).color,
+              Vec3(0.9, 0.7, 0.2));  // inherited material
 }
 
 TEST(SdfSceneFile, ErrorsNameTheNodeTheKeyAndThePosition) {
