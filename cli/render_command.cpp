@@ -202,6 +202,7 @@ Extents fit_scene(const RenderArgs& args, render::Scene& scene,
         return extents;
     }
     scene.camera.reset();
+    scene.camera_path.reset();
     for (std::size_t i = 0; i < extents.size(); ++i) {
         if (extents[i]->kind != render::SurfaceExtent::Kind::bounded) {
             std::fprintf(stderr,
@@ -270,7 +271,7 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     if (args.turntable && (*args.turntable < 1 || *args.turntable > 100000)) {
         bad_flag("--turntable", std::to_string(*args.turntable), "a frame count from 1 to 100000");
     }
-    const int frames = args.turntable.value_or(0);
+    int frames = args.turntable.value_or(0);  // 0: one still picture
     render::ExecutionSettings execution;
     execution.deadline = deadline;
     render::Scene scene;
@@ -304,6 +305,22 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         }
         extents = fit_scene(args, scene, compiled, deadline);
         apply_camera_flags(args, scene);
+        if (scene.camera_path) {
+            if (args.turntable) {
+                throw CommandFailure(exit_input, args.input +
+                                                     ": the scene's camera path and --turntable: "
+                                                     "give one");
+            }
+            if (!args.eye.empty() || !args.target.empty() || !args.up.empty() || args.fov) {
+                throw CommandFailure(exit_input, args.input +
+                                                     ": the camera flags do not apply to the "
+                                                     "scene's camera path ([[camera.key]])");
+            }
+            frames = scene.camera_path->frames;
+            unregister_partial_file(partial);
+            partial = render::partial_path(render::frame_path(args.output, 1, frames));
+            register_partial_file(partial, args.output);
+        }
     } catch (const Timeout& e) {
         throw CommandFailure(exit_timeout, std::string(e.what()) + " (--timeout " +
                                                timeout_text(args.limits) +
@@ -313,12 +330,14 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     const render::CameraSpec base_camera = scene.camera.value_or(render::default_camera(scene));
     const auto started = std::chrono::steady_clock::now();
     render::RenderStats total;
-    // One frame, or each turntable frame in turn: the surfaces are compiled once above.
+    // One frame, or each frame of the turntable or the camera path in turn: the surfaces are
+    // compiled once above.
     for (int frame = 0; frame < std::max(frames, 1); ++frame) {
         const std::string path =
             frames > 0 ? render::frame_path(args.output, frame + 1, frames) : args.output;
         if (frames > 0) {
-            scene.camera = render::turntable_camera(base_camera, frame, frames);
+            scene.camera = scene.camera_path ? render::camera_on_path(*scene.camera_path, frame)
+                                             : render::turntable_camera(base_camera, frame, frames);
             if (frame > 0) {
                 partial = render::partial_path(path);
                 register_partial_file(partial, path);
@@ -367,8 +386,9 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
             warn_nothing_hit(scene, compiled, extents, base_camera, deadline);
         }
         print_frame_stats(scene, total);
-        std::fprintf(stderr, "turntable: %d frames in %.3f s (%.2f frames/s, writing included)\n",
-                     frames, seconds, frames / seconds);
+        std::fprintf(stderr, "%s: %d frames in %.3f s (%.2f frames/s, writing included)\n",
+                     scene.camera_path ? "camera path" : "turntable", frames, seconds,
+                     frames / seconds);
         std::fprintf(stderr, "wrote %s ... %s\n",
                      render::frame_path(args.output, 1, frames).c_str(),
                      render::frame_path(args.output, frames, frames).c_str());

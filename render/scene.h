@@ -10,6 +10,7 @@
 
 #include "algebra/compiled.h"
 #include "render/camera.h"
+#include "render/camera_path.h"
 #include "render/clip_region.h"
 #include "render/material.h"
 #include "render/sdf/node.h"
@@ -54,6 +55,9 @@ struct Scene {
     int height = 512;
     Vec3 background{0.10, 0.11, 0.13};
     std::optional<CameraSpec> camera;  // none: framed on the clip regions (default_camera)
+    // An animation: [camera] with `frames` and [[camera.key]] tables (camera is then its first
+    // key).
+    std::optional<CameraPath> camera_path;
     std::vector<Light> lights;         // empty: default_lights()
     std::vector<Surface> surfaces;
     // The SDF scene tree ([[object]] in scene files, render/sdf/): when present, the scene is

@@ -35,6 +35,21 @@ Surface read_surface(const toml::table& table, const std::string& path,
     return s;
 }
 
+// eye, target, up and fov on top of `start` (the previous key of a camera path).
+CameraSpec read_camera_keys(TableReader& r, const toml::table& table, const CameraSpec& start) {
+    CameraSpec spec = start;
+    spec.eye = r.vector("eye", spec.eye);
+    spec.target = r.vector("target", spec.target);
+    spec.up = r.vector("up", spec.up);
+    spec.fov_degrees = r.number("fov", spec.fov_degrees, true);
+    if (spec.eye == spec.target) {
+        const toml::node* at = table.get("eye") ? table.get("eye") : table.get("target");
+        throw InputError(position(at != nullptr ? *at : table) + ": " + r.path() + "eye",
+                         "the eye must differ from the target");
+    }
+    return spec;
+}
+
 Light read_light(const toml::table& table, const std::string& path) {
     TableReader r(table, path);
     Light light;
@@ -86,18 +101,28 @@ Scene parse_scene(std::string_view text, const SurfaceCompiler& compile,
     }
     if (const toml::table* camera = r.subtable("camera")) {
         TableReader rc(*camera, "camera.");
-        CameraSpec spec;
-        spec.eye = rc.vector("eye", spec.eye);
-        spec.target = rc.vector("target", spec.target);
-        spec.up = rc.vector("up", spec.up);
-        spec.fov_degrees = rc.number("fov", spec.fov_degrees, true);
-        rc.finish();
-        if (spec.eye == spec.target) {
-            const toml::node* at = camera->get("eye") ? camera->get("eye") : camera->get("target");
-            throw InputError(position(at != nullptr ? *at : *camera) + ": camera.eye",
-                             "the eye must differ from the target");
-        }
+        const CameraSpec spec = read_camera_keys(rc, *camera, CameraSpec{});
         scene.camera = spec;
+        const toml::node* frames = rc.find("frames");
+        const toml::array* keys = rc.array_of_tables("key");
+        if ((frames == nullptr) != (keys == nullptr)) {
+            throw InputError(position(frames != nullptr ? *frames : *camera->get("key")) + ": " +
+                                 (frames != nullptr ? "camera.frames" : "camera.key"),
+                             "a camera path needs both `frames` and [[camera.key]] tables");
+        }
+        if (keys != nullptr) {
+            CameraPath path;
+            path.frames = rc.count("frames", 2, 2, 100000);
+            path.keys.push_back(spec);
+            for (std::size_t i = 0; i < keys->size(); ++i) {
+                const toml::table& table = *(*keys)[i].as_table();
+                TableReader rk(table, "camera.key[" + std::to_string(i + 1) + "].");
+                path.keys.push_back(read_camera_keys(rk, table, path.keys.back()));
+                rk.finish();
+            }
+            scene.camera_path = path;
+        }
+        rc.finish();
     }
     if (const toml::array* lights = r.array_of_tables("light")) {
         for (std::size_t i = 0; i < lights->size(); ++i) {

@@ -130,6 +130,14 @@ else
 fi
 expect "--fit on an unbounded surface warns" 0 "is not bounded" -- \
     "$locus" render "x^2+y^2-1" --fit -o "$tmp/cylinder.png" --size 16x16
+printf '[camera]\neye = [0, 0, 5]\nframes = 3\n[[camera.key]]\neye = [5, 0, 0]\n[[surface]]\nequation = "x^2+y^2+z^2-1"\n' \
+    >"$tmp/path.toml"
+expect "a camera path renders its frames" 0 "camera path: 3 frames in" -- \
+    "$locus" render "$tmp/path.toml" -o "$tmp/path.png" --size 16x16 --threads 1
+[[ -s "$tmp/path_0003.png" && ! -e "$tmp/path_0004.png" ]] && { echo "ok   camera path files"; passes=$((passes + 1)); } ||
+    fail "camera path files"
+expect "a camera path and --turntable" 2 "give one" -- \
+    "$locus" render "$tmp/path.toml" -o "$tmp/path.png" --size 16x16 --turntable 4
 expect "square-free part reported" 0 "rendering its square-free part x^2+y^2+z^2-1" -- \
     "$locus" render "(x^2+y^2+z^2-1)^2" -o "$tmp/squared.png" --size 16x16
 expect "render AOVs" 0 "wrote $tmp/aov.depth.exr" -- \

@@ -146,6 +146,41 @@ translate = [-3, 0, 0]
     EXPECT_EQ(tree.objects[2]->material_at({-3, 0.9, 0}, {}).color, grey);
 }
 
+TEST(SceneFile, ACameraPathStartsAtTheCameraAndKeepsWhatAKeyLeavesOut) {
+    const Scene scene = parse_scene(R"(
+[camera]
+eye = [0, 0, 5]
+fov = 30
+frames = 24
+[[camera.key]]
+eye = [5, 0, 0]
+[[camera.key]]
+target = [0, 1, 0]
+fov = 20
+[[surface]]
+equation = "x^2+y^2+z^2-1"
+)");
+    ASSERT_TRUE(scene.camera_path.has_value());
+    const CameraPath& path = *scene.camera_path;
+    EXPECT_EQ(path.frames, 24);
+    ASSERT_EQ(path.keys.size(), 3u);
+    EXPECT_EQ(path.keys[0].eye, Vec3(0, 0, 5));
+    EXPECT_EQ(path.keys[1].eye, Vec3(5, 0, 0));
+    EXPECT_EQ(path.keys[1].fov_degrees, 30.0);
+    EXPECT_EQ(path.keys[2].eye, Vec3(5, 0, 0));
+    EXPECT_EQ(path.keys[2].target, Vec3(0, 1, 0));
+    EXPECT_EQ(path.keys[2].fov_degrees, 20.0);
+    EXPECT_EQ(error_of("[camera]\nframes = 5\n[[surface]]\nequation = \"x\"\n"),
+              "line 2, column 10: camera.frames: a camera path needs both `frames` and "
+              "[[camera.key]] tables");
+    EXPECT_EQ(error_of("[camera]\nframes = 1\n[[camera.key]]\neye = [1, 0, 0]\n[[surface]]\n"
+                       "equation = \"x\"\n"),
+              "line 2, column 10: camera.frames: expected an integer from 2 to 100000, found 1");
+    EXPECT_EQ(error_of("[camera]\nframes = 3\n[[camera.key]]\neye = [0, 0, 0]\n[[surface]]\n"
+                       "equation = \"x\"\n"),
+              "line 4, column 7: camera.key[1].eye: the eye must differ from the target");
+}
+
 TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
     EXPECT_EQ(error_of("[[surface]]\nequation = \"x\"\ncolour = 3\n"),
               "line 3, column 1: surface[1].colour: unknown key");
