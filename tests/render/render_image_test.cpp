@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "algebra/error.h"
+#include "render/shading.h"
 #include "render/trace_method.h"
 #include "tests/support/trace_method_name.h"
 
@@ -116,6 +119,42 @@ TEST(Render, DeadlineStopsTheFrameWithATimeout) {
     const RenderedImage image = render(scene, surfaces, execution);
     const RenderedImage reference = render(scene, surfaces, {});
     EXPECT_EQ(image.color, reference.color);
+}
+
+}  // namespace
+}  // namespace locus::render
+
+namespace locus::render {
+namespace {
+
+// The sRGB transfer function as IEC 61966-2-1 states it, rounded to 8 bits: the oracle of the
+// threshold table behind to_srgb8.
+int srgb8_reference(double c) {
+    c = std::clamp(c, 0.0, 1.0);
+    const double encoded = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+    return static_cast<int>(std::lround(encoded * 255.0));
+}
+
+TEST(Srgb8, TheTableEncodesAsTheTransferFunction) {
+    std::mt19937_64 random(42);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 200000; ++i) {
+        const double c = i % 2 == 0 ? unit(random) : std::pow(unit(random), 6.0);  // dark too
+        ASSERT_EQ(to_srgb8(c), srgb8_reference(c)) << c;
+    }
+    // Around every step of the output, to the last bit.
+    for (int k = 1; k <= 255; ++k) {
+        double lo = 0.0, hi = 1.0;
+        while (std::nextafter(lo, 1.0) < hi) {
+            const double middle = lo + 0.5 * (hi - lo);
+            (srgb8_reference(middle) >= k ? hi : lo) = middle;
+        }
+        EXPECT_EQ(to_srgb8(lo), k - 1) << lo;
+        EXPECT_EQ(to_srgb8(hi), k) << hi;
+    }
+    EXPECT_EQ(to_srgb8(-1.0), 0);
+    EXPECT_EQ(to_srgb8(2.0), 255);
+    EXPECT_EQ(to_srgb8(std::nan("")), 0);
 }
 
 }  // namespace
