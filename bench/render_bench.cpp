@@ -220,7 +220,9 @@ int run_render_bench(const RenderBenchArgs& args) {
         }
         return run_whole_process_comparison(
             suite, {args.size, args.locus.empty() ? default_locus_executable() : args.locus,
-                    with_surf ? args.surf : "", args.suite.min_seconds, args.suite.csv});
+                    with_surf ? args.surf : "",
+                    args.methods.empty() ? std::string() : args.methods.front(),
+                    args.suite.min_seconds, args.suite.csv});
     }
     if (args.suite.csv) {
         std::cout << "case,degree,method,setting,tolerance,rays,seconds,rays_per_second,"

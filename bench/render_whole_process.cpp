@@ -35,21 +35,22 @@ int run_whole_process_comparison(const std::vector<SuiteSurface>& suite,
     const std::filesystem::path image = std::filesystem::temp_directory_path() /
                                         ("locus-whole-" + std::to_string(::getpid()) + ".png");
     if (args.csv) {
-        std::cout << "case,degree,size,locus_seconds,surf_seconds,ratio,locus_best_seconds,"
+        std::cout << "case,degree,method,size,locus_seconds,surf_seconds,ratio,locus_best_seconds,"
                      "surf_best_seconds,best_ratio\n";
     } else {
-        std::printf("%-18s %3s %5s %9s %9s %6s %9s %9s %6s\n", "case", "deg", "size", "locus s",
-                    "surf s", "ratio", "locus min", "surf min", "ratio");
+        std::printf("%-18s %3s %-9s %5s %9s %9s %6s %9s %9s %6s\n", "case", "deg", "method", "size",
+                    "locus s", "surf s", "ratio", "locus min", "surf min", "ratio");
     }
     const std::string size = std::to_string(args.size) + "x" + std::to_string(args.size);
     for (const SuiteSurface& s : suite) {
         const int degree = algebra::compile_surface(s.equation).degree();
         char radius[32];
         std::snprintf(radius, sizeof radius, "%.17g", s.clip_radius);
-        const std::string locus_command = "timeout 120 " + quoted(args.locus) + " render " +
-                                          quoted(s.equation) + " -o " + quoted(image.string()) +
-                                          " --size " + size + " --clip-radius " + radius +
-                                          " --shadows off >/dev/null 2>&1";
+        const std::string locus_command =
+            "timeout 120 " + quoted(args.locus) + " render " + quoted(s.equation) + " -o " +
+            quoted(image.string()) + " --size " + size + " --clip-radius " + radius +
+            " --shadows off" + (args.method.empty() ? "" : " --method " + args.method) +
+            " >/dev/null 2>&1";
         std::optional<SurfRun> surf;
         if (!args.surf.empty()) {
             surf.emplace(args.surf, s, args.size);
@@ -79,15 +80,16 @@ int run_whole_process_comparison(const std::vector<SuiteSurface>& suite,
         const RunTimes mine = summary_of(locus_times);
         const RunTimes theirs = surf_ok ? summary_of(surf_times) : RunTimes{};
         if (args.csv) {
-            std::cout << s.name << "," << degree << "," << args.size << "," << mine.median << ","
-                      << theirs.median << "," << ratio_text(mine.median, theirs.median) << ","
-                      << mine.best << "," << theirs.best << ","
-                      << ratio_text(mine.best, theirs.best) << "\n";
+            std::cout << s.name << "," << degree << ","
+                      << (args.method.empty() ? "default" : args.method) << "," << args.size << ","
+                      << mine.median << "," << theirs.median << ","
+                      << ratio_text(mine.median, theirs.median) << "," << mine.best << ","
+                      << theirs.best << "," << ratio_text(mine.best, theirs.best) << "\n";
         } else {
-            std::printf("%-18s %3d %5d %9.4f %9.4f %6s %9.4f %9.4f %6s\n", s.name.c_str(), degree,
-                        args.size, mine.median, theirs.median,
-                        ratio_text(mine.median, theirs.median).c_str(), mine.best, theirs.best,
-                        ratio_text(mine.best, theirs.best).c_str());
+            std::printf("%-18s %3d %-9s %5d %9.4f %9.4f %6s %9.4f %9.4f %6s\n", s.name.c_str(),
+                        degree, args.method.empty() ? "default" : args.method.c_str(), args.size,
+                        mine.median, theirs.median, ratio_text(mine.median, theirs.median).c_str(),
+                        mine.best, theirs.best, ratio_text(mine.best, theirs.best).c_str());
         }
         std::cout.flush();
     }

@@ -52,14 +52,19 @@ std::string write_png(std::FILE* file, int width, int height, const std::uint8_t
     header.height = static_cast<std::uint32_t>(height);
     header.bit_depth = 8;
     header.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
-    // zlib's default level 6 and libspng's default (adaptive) row filters, as libpng's writers
-    // use by default.
+    // zlib level 2 and the Sub filter on every row: on a 512² render (a torus, 786 KB of
+    // pixels) 20 ms and 51 KB, where zlib's default level 6 with libspng's adaptive choice of
+    // filters per row (libpng's defaults) took 110 ms for 39 KB, a third of the whole command.
+    // Rendered pictures are mostly flat background and smooth shading, which Sub predicts.
     int status = spng_set_png_file(context.get(), file);
     if (status == 0) {
         status = spng_set_ihdr(context.get(), &header);
     }
     if (status == 0) {
-        status = spng_set_option(context.get(), SPNG_IMG_COMPRESSION_LEVEL, 6);
+        status = spng_set_option(context.get(), SPNG_IMG_COMPRESSION_LEVEL, 2);
+    }
+    if (status == 0) {
+        status = spng_set_option(context.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_SUB);
     }
     if (status == 0) {
         const std::size_t size =
