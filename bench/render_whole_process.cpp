@@ -75,6 +75,8 @@ int run_whole_process_comparison(const std::vector<SuiteSurface>& suite,
         if (!ok) {
             std::fprintf(stderr, "%s: locus render failed: %s\n", s.name.c_str(),
                          locus_command.c_str());
+            std::error_code ignored;
+            std::filesystem::remove(image, ignored);
             return cli::exit_internal;
         }
         const RunTimes mine = summary_of(locus_times);

@@ -201,8 +201,12 @@ Extents fit_scene(const RenderArgs& args, render::Scene& scene,
     if (!args.fit) {
         return extents;
     }
+    if (scene.camera_path) {
+        throw CommandFailure(exit_input, args.input +
+                                             ": --fit and the scene's camera path "
+                                             "([[camera.key]]): give one");
+    }
     scene.camera.reset();
-    scene.camera_path.reset();
     for (std::size_t i = 0; i < extents.size(); ++i) {
         if (extents[i]->kind != render::SurfaceExtent::Kind::bounded) {
             std::fprintf(stderr,
@@ -223,19 +227,28 @@ Extents fit_scene(const RenderArgs& args, render::Scene& scene,
 }
 
 // Says on stderr why a picture shows only the background, surface by surface.
+// `camera` is the first frame's; `undecided` the rays no method could decide.
 void warn_nothing_hit(const render::Scene& scene,
                       std::span<const algebra::CompiledPolynomial> compiled, const Extents& extents,
-                      const render::CameraSpec& camera, Deadline deadline) {
+                      const render::CameraSpec& camera, long undecided, bool animation,
+                      Deadline deadline) {
+    if (undecided > 0) {
+        std::fprintf(stderr,
+                     "locus: warning: no ray hit a surface, and %ld rays were undecided (drawn as "
+                     "background): the method could not settle them (see --method)\n",
+                     undecided);
+        return;
+    }
     if (!scene.objects.empty() || scene.surfaces.empty()) {
         std::fprintf(stderr,
                      "locus: warning: no ray hit the scene: the picture shows the "
                      "background only (see --fit, --eye, --target)\n");
         return;
     }
-    std::fprintf(stderr,
-                 "locus: warning: no ray hit %s, so the picture shows the background "
-                 "only:\n",
-                 scene.surfaces.size() == 1 ? "the surface" : "any surface");
+    std::fprintf(stderr, "locus: warning: no ray hit %s, so the %s the background only%s:\n",
+                 scene.surfaces.size() == 1 ? "the surface" : "any surface",
+                 animation ? "frames show" : "picture shows",
+                 animation ? " (where the camera is concerned, as seen from the first frame)" : "");
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         std::string reason;
         try {
@@ -328,6 +341,22 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     }
     execution.threads = scene.options.threads;
     const render::CameraSpec base_camera = scene.camera.value_or(render::default_camera(scene));
+    const auto frame_camera = [&](int frame) {
+        return scene.camera_path ? render::camera_on_path(*scene.camera_path, frame)
+                                 : render::turntable_camera(base_camera, frame, frames);
+    };
+    // Every frame's camera before the first is rendered: between its keys a camera path can
+    // pass through a degenerate camera (an up direction blended to zero, the eye on the
+    // target), which must be refused up front, not after some frames are written.
+    for (int frame = 0; frame < frames; ++frame) {
+        try {
+            const render::Camera check(frame_camera(frame), scene.width, scene.height);
+        } catch (const Error& e) {
+            throw CommandFailure(
+                exit_input, args.input + ": " + (scene.camera_path ? "camera path" : "turntable") +
+                                ", frame " + std::to_string(frame + 1) + ": " + e.what());
+        }
+    }
     const auto started = std::chrono::steady_clock::now();
     render::RenderStats total;
     // One frame, or each frame of the turntable or the camera path in turn: the surfaces are
@@ -336,8 +365,7 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         const std::string path =
             frames > 0 ? render::frame_path(args.output, frame + 1, frames) : args.output;
         if (frames > 0) {
-            scene.camera = scene.camera_path ? render::camera_on_path(*scene.camera_path, frame)
-                                             : render::turntable_camera(base_camera, frame, frames);
+            scene.camera = frame_camera(frame);
             if (frame > 0) {
                 partial = render::partial_path(path);
                 register_partial_file(partial, path);
@@ -366,7 +394,8 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         unregister_partial_file(partial);
         if (frames == 0) {
             if (stats.hits == 0) {
-                warn_nothing_hit(scene, compiled, extents, base_camera, deadline);
+                warn_nothing_hit(scene, compiled, extents, base_camera, stats.unknown, false,
+                                 deadline);
             }
             print_frame_stats(scene, stats);
             for (const std::string& written_path : written) {
@@ -383,7 +412,7 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (total.hits == 0) {
-            warn_nothing_hit(scene, compiled, extents, base_camera, deadline);
+            warn_nothing_hit(scene, compiled, extents, base_camera, total.unknown, true, deadline);
         }
         print_frame_stats(scene, total);
         std::fprintf(stderr, "%s: %d frames in %.3f s (%.2f frames/s, writing included)\n",

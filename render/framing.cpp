@@ -51,7 +51,9 @@ std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomia
     }
     if (extent->kind == SurfaceExtent::Kind::none_found) {
         return "no real point of it was found on " + std::to_string(extent->lines) +
-               " lines through it (it may have none, as x^2+y^2+z^2+1 has none)";
+               " lines through the origin: it may have none (as x^2+y^2+z^2+1), or be too small "
+               "or too far from the origin to be met (then give a clip region: --clip-radius, "
+               "or clip keys in a scene file)";
     }
     const std::optional<ClipBox> inside = box_in_region(f, surface.clip, 1024, deadline);
     if (!inside) {

@@ -239,7 +239,9 @@ class ExtentSearch {
         for (int axis = 0; axis < 3; ++axis) {
             for (const double side : {-1.0, 1.0}) {
                 const auto extent_of = [&](const Vec3& u) -> std::optional<double> {
-                    ++lines;
+                    if (++lines % 16 == 0) {
+                        check_deadline(0);
+                    }
                     const auto point =
                         outermost_point(tracer, centre, u, root_bound(centre, u), nullptr);
                     return point ? std::optional<double>(side * (*point)[axis]) : std::nullopt;

@@ -129,7 +129,11 @@ class Elongate final : public Unary {
     }
     double value(const Vec3& p) const override { return child_->value(squeezed(p)); }
     Material material_at(const Vec3& p, const Footprint& footprint) const override {
-        return child_->material_at(squeezed(p), footprint);
+        // Mapped, not passed on: inside the stretched part a squeezed coordinate is 0, a cell
+        // boundary, where an unmapped width would average a checker to flat grey.
+        return child_->material_at(
+            squeezed(p),
+            mapped_footprint(footprint, p, [this](const Vec3& q) { return squeezed(q); }));
     }
     std::string_view type() const override { return "elongate"; }
 

@@ -138,6 +138,15 @@ expect "a camera path renders its frames" 0 "camera path: 3 frames in" -- \
     fail "camera path files"
 expect "a camera path and --turntable" 2 "give one" -- \
     "$locus" render "$tmp/path.toml" -o "$tmp/path.png" --size 16x16 --turntable 4
+expect "a camera path and --fit" 2 "--fit and the scene's camera path" -- \
+    "$locus" render "$tmp/path.toml" -o "$tmp/path.png" --size 16x16 --fit
+# Opposite up directions blend to zero halfway: refused before any frame is written.
+printf '[camera]\neye = [0, 0, 5]\nframes = 3\n[[camera.key]]\nup = [0, -1, 0]\n[[surface]]\nequation = "x^2+y^2+z^2-1"\n' \
+    >"$tmp/flip.toml"
+expect "a degenerate camera between keys" 2 "camera path, frame 2:" -- \
+    "$locus" render "$tmp/flip.toml" -o "$tmp/flip.png" --size 16x16
+[[ ! -e "$tmp/flip_0001.png" ]] && { echo "ok   no frame written"; passes=$((passes + 1)); } ||
+    fail "no frame written"
 expect "square-free part reported" 0 "rendering its square-free part x^2+y^2+z^2-1" -- \
     "$locus" render "(x^2+y^2+z^2-1)^2" -o "$tmp/squared.png" --size 16x16
 expect "render AOVs" 0 "wrote $tmp/aov.depth.exr" -- \

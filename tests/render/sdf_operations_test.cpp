@@ -236,6 +236,18 @@ TEST(SdfTransforms, MatchTheirClosedForms) {
         EXPECT_NEAR(stretched->value(p), capsule->value(p), 1e-12);
         EXPECT_NEAR(rounded->value(p), make_box({1.25, 1.25, 1.25}, 0.25, m)->value(p), 1e-12);
     }
+    // A checker seen through the stretch: inside the straight section the squeezed y is 0, and
+    // a footprint along y must shrink to nothing there (mapped), not average the cell boundary
+    // at 0 into grey (review finding).
+    Material checkered = Material::plain(Vec3(1.0));
+    checkered.checker = Vec3(0.0);
+    checkered.checker_size = 0.25;
+    const NodePtr striped =
+        make_elongate(make_sphere(0.5, std::make_shared<const Material>(checkered)), {0, 1, 0});
+    Footprint along_y;
+    along_y.dy = {0.0, 0.05, 0.0};
+    const Vec3 colour = striped->material_at({0.1, 0.3, 0.1}, along_y).color;
+    EXPECT_TRUE(colour == Vec3(1.0) || colour == Vec3(0.0)) << colour.x;
 }
 
 std::string scene_error(const std::string& text) {
