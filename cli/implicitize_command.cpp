@@ -13,6 +13,8 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/process_limits.h"
+#include "implicit/bezier_patch.h"
+#include "implicit/dixon.h"
 #include "implicit/implicitize.h"
 
 namespace locus::cli {
@@ -26,9 +28,10 @@ struct ImplicitizeArgs {
     ProcessLimitArgs limits;
 };
 
-int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
-    const Deadline deadline = apply_process_limits(args.limits);
-    const algebra::OutputFormat format = algebra::parse_output_format(args.format);
+// The maps to implicitize, each with a label for messages: one for a .param file, one per
+// patch for a .bpt file.
+std::vector<std::pair<std::string, implicit::Parametrization>> read_maps(
+    const ImplicitizeArgs& args) {
     std::string text, source;
     if (!args.params.empty()) {
         text = "params: " + args.params + "\n";
@@ -45,36 +48,60 @@ int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
         text = read_input(args.inputs[0]);
         source = args.inputs[0] == "-" ? "<stdin>" : args.inputs[0];
     }
-    implicit::Parametrization map;
+    std::vector<std::pair<std::string, implicit::Parametrization>> maps;
     try {
-        map = implicit::parse_parametrization(text);
+        if (args.params.empty() &&
+            (args.inputs[0].ends_with(".bpt") || implicit::looks_like_bpt(text))) {
+            const auto patches = implicit::parse_bpt(text);
+            for (std::size_t i = 0; i < patches.size(); ++i) {
+                maps.emplace_back("patch " + std::to_string(i + 1) + " (line " +
+                                      std::to_string(patches[i].first_line) + ")",
+                                  implicit::to_parametrization(patches[i]));
+            }
+        } else {
+            maps.emplace_back("", implicit::parse_parametrization(text));
+        }
     } catch (const Error& e) {
         throw failure_about(source, e);
     }
-    algebra::GroebnerOptions options;
-    options.deadline = deadline;
-    options.progress = progress.groebner("implicitize");
+    return maps;
+}
+
+const char* describe_method(const std::string& method) {
+    return method == "resultant"     ? "resultant (iterated Sylvester, factor kept by substitution)"
+           : method == "interpolate" ? "interpolate (kernel modulo primes, CRT, rational "
+                                       "reconstruction)"
+           : method == "dixon"       ? "dixon (Dixon determinant modulo primes, CRT, rational "
+                                       "reconstruction, factor kept by substitution)"
+           : method == "dixon-minor" ? "dixon (maximal minor of the singular Dixon matrix modulo "
+                                       "primes, factor kept by substitution)"
+                                     : "groebner (elimination)";
+}
+
+// Implicitizes one map and prints its equation (or generators) on stdout; the method and the
+// verification go to stderr, prefixed with `label` when there are several maps.
+void implicitize_one(const ImplicitizeArgs& args, const implicit::Parametrization& map,
+                     const std::string& label, algebra::OutputFormat format,
+                     const algebra::GroebnerOptions& options) {
+    const std::string prefix = label.empty() ? "" : label + ": ";
     std::optional<implicit::ImplicitResult> found;
     if (args.method == "auto") {
         std::string fallback_reason;
         found = implicit::implicitize_auto(map, options, &fallback_reason);
         if (!fallback_reason.empty()) {
-            std::fprintf(stderr, "faster routes gave up (%s)\n", fallback_reason.c_str());
+            std::fprintf(stderr, "%sfaster routes gave up (%s)\n", prefix.c_str(),
+                         fallback_reason.c_str());
         }
     } else if (args.method == "resultant") {
         found = implicit::implicitize_by_resultant(map);
     } else if (args.method == "interpolate") {
-        found = implicit::implicitize_by_interpolation(map);
+        found = implicit::implicitize_by_interpolation(map, options.deadline);
+    } else if (args.method == "dixon") {
+        found = implicit::implicitize_by_dixon(map, options.deadline);
     }
     const implicit::ImplicitResult r =
         found ? std::move(*found) : implicit::implicitize(map, options);
-    progress.clear();
-    std::fprintf(stderr, "method: %s\n",
-                 r.method == "resultant"     ? "resultant (iterated Sylvester, factor kept by "
-                                               "substitution)"
-                 : r.method == "interpolate" ? "interpolate (kernel modulo primes, CRT, rational "
-                                               "reconstruction)"
-                                             : "groebner (elimination)");
+    std::fprintf(stderr, "%smethod: %s\n", prefix.c_str(), describe_method(r.method));
     for (const std::size_t v : map.half_angle) {
         const std::string& u = map.parameter_ring->variable_name(v);
         std::fprintf(stderr,
@@ -90,31 +117,49 @@ int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
                                  ? "the parametrization"
                                  : "the parametrization as written (sin^2 + cos^2 = 1)";
     if (r.equation) {
-        if (!implicit::vanishes_on_map_as_written(*r.equation, map)) {
+        const bool proved = r.proved_on_map && map.circle_components.empty();
+        if (!proved && !implicit::vanishes_on_map_as_written(*r.equation, map)) {
             throw CommandFailure(exit_check_failed,
-                                 "verification FAILED: the equation does not vanish on the "
-                                 "parametrization");
+                                 prefix +
+                                     "verification FAILED: the equation does not vanish on the "
+                                     "parametrization");
         }
         std::cout << algebra::format_polynomials(std::vector{*r.equation}, *r.ring, format);
         std::cout.flush();
         const algebra::Factorization fac = algebra::factor(*r.equation);
         const bool irreducible = fac.factors.size() == 1 && fac.factors[0].second == 1;
-        std::fprintf(stderr, "verified: vanishes identically on %s\n", as_written);
-        std::fprintf(stderr, "degree %ld, %zu terms, %s\n", r.equation->total_degree(),
-                     r.equation->num_terms(), irreducible ? "irreducible" : "reducible");
-        return exit_ok;
+        std::fprintf(stderr, "%sverified: vanishes identically on %s\n", prefix.c_str(),
+                     as_written);
+        std::fprintf(stderr, "%sdegree %ld, %zu terms, %s\n", prefix.c_str(),
+                     r.equation->total_degree(), r.equation->num_terms(),
+                     irreducible ? "irreducible" : "reducible");
+        return;
     }
     for (const auto& g : r.generators) {
         if (!implicit::vanishes_on_map_as_written(g, map)) {
             throw CommandFailure(exit_check_failed,
-                                 "verification FAILED for " + algebra::to_string(g));
+                                 prefix + "verification FAILED for " + algebra::to_string(g));
         }
     }
     std::cout << algebra::format_polynomials(r.generators, *r.ring, format);
     std::cout.flush();
-    std::fprintf(stderr, "not principal: %s\nverified: all %zu generators vanish on %s\n",
+    std::fprintf(stderr, "%snot principal: %s\n%sverified: all %zu generators vanish on %s\n",
+                 prefix.c_str(),
                  implicit::describe_image(r.image, k, map.coordinates.size()).c_str(),
-                 r.generators.size(), as_written);
+                 prefix.c_str(), r.generators.size(), as_written);
+}
+
+int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
+    const Deadline deadline = apply_process_limits(args.limits);
+    const algebra::OutputFormat format = algebra::parse_output_format(args.format);
+    const auto maps = read_maps(args);
+    algebra::GroebnerOptions options;
+    options.deadline = deadline;
+    options.progress = progress.groebner("implicitize");
+    for (const auto& [label, map] : maps) {
+        implicitize_one(args, map, label, format, options);
+        progress.clear();
+    }
     return exit_ok;
 }
 
@@ -125,17 +170,18 @@ void add_implicitize_command(CLI::App& app, CommandContext& context) {
     CLI::App* cmd = app.add_subcommand(
         "implicitize", "Implicit equation of a parametrization, verified by substitution");
     cmd->add_option("inputs", args->inputs,
-                    "a .param file (- for standard input), or with -p the assignments "
+                    "a .param or .bpt file (- for standard input), or with -p the assignments "
                     "\"x = ...\"")
         ->required();
     cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
     add_choice(cmd, "--method", args->method,
                {{"auto",
                  "the default: for plane curves and surfaces groebner for 20 ms, then "
-                 "interpolate, then resultant"},
+                 "dixon (surfaces), interpolate, resultant"},
                 {"groebner", "elimination"},
                 {"resultant", "iterated Sylvester resultants"},
-                {"interpolate", "the kernel modulo primes"}},
+                {"interpolate", "the kernel modulo primes"},
+                {"dixon", "the Dixon determinant modulo primes (surfaces)"}},
                "the route");
     add_choice(cmd, "--format", args->format, output_format_choices(), "output");
     add_process_limit_options(cmd, args->limits);

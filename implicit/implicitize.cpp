@@ -8,6 +8,7 @@
 #include "algebra/flint_convert.h"
 #include "algebra/groebner/signature_groebner.h"
 #include "algebra/ideal_ops.h"
+#include "implicit/dixon.h"
 
 namespace locus::implicit {
 
@@ -231,6 +232,11 @@ std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t n
 // elimination over 30 s).
 ImplicitResult implicitize_auto(const Parametrization& map, const algebra::GroebnerOptions& options,
                                 std::string* fallback_reason) {
+    auto note_fallback = [&](const char* reason) {
+        if (fallback_reason != nullptr) {
+            *fallback_reason += (fallback_reason->empty() ? "" : "; ") + std::string(reason);
+        }
+    };
     const std::size_t num_params = map.parameter_ring->num_vars();
     const bool one_equation = (num_params == 1 && map.coordinates.size() == 2) ||
                               (num_params == 2 && map.coordinates.size() == 3);
@@ -245,25 +251,33 @@ ImplicitResult implicitize_auto(const Parametrization& map, const algebra::Groeb
         try {
             return implicitize(map, probe);
         } catch (const Timeout&) {
-            // go on with interpolation
+            // go on with the structured routes
+        }
+        if (num_params == 2) {
+            // The Dixon determinant: one characteristic polynomial per grid line and prime,
+            // where interpolation needs an elimination of the whole support per prime (the
+            // bicubic patch: 18 × 18 pencils against a 1330-column kernel).
+            try {
+                return implicitize_by_dixon(map, options.deadline);
+            } catch (const Timeout&) {
+                throw;
+            } catch (const Error& e) {
+                note_fallback(e.what());
+            }
         }
         try {
             return implicitize_by_interpolation(map, options.deadline);
         } catch (const Timeout&) {
             throw;
         } catch (const Error& e) {
-            if (fallback_reason != nullptr) {
-                *fallback_reason = e.what();
-            }
+            note_fallback(e.what());
         }
         try {
             return implicitize_by_resultant(map);
         } catch (const InputError&) {
             throw;
         } catch (const Error& e) {
-            if (fallback_reason != nullptr) {
-                *fallback_reason += std::string("; ") + e.what();
-            }
+            note_fallback(e.what());
         }
     }
     return implicitize(map, options);

@@ -34,6 +34,9 @@ struct ImplicitResult {
     ImageKind image = ImageKind::hypersurface;
     std::string method = "groebner";
     algebra::GroebnerStats stats;
+    // The route proved `equation` by vanishes_on (interpolation, Dixon): checking it again on
+    // a map without angles would repeat the same proof.
+    bool proved_on_map = false;
 };
 
 // The ideal that implicitize() eliminates from: generators qᵢxᵢ − pᵢ (and 1 − w·q for rational
@@ -71,10 +74,10 @@ ImplicitResult implicitize_by_interpolation(
     std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 // The route `--method auto` takes: for plane curves and surfaces, Gröbner elimination for at
-// most 20 ms, then interpolation modulo primes, then, if it gives up (the image is not a
-// hypersurface, too many monomials), resultants, then Gröbner elimination under
-// options.deadline; space curves and other shapes go to elimination directly. When a route
-// gave up, `fallback_reason` (if given) receives why.
+// most 20 ms; for surfaces then the Dixon determinant (implicit/dixon.h); then interpolation
+// modulo primes, then, if it gives up (the image is not a hypersurface, too many monomials),
+// resultants, then Gröbner elimination under options.deadline; space curves and other shapes go
+// to elimination directly. When a route gave up, `fallback_reason` (if given) receives why.
 ImplicitResult implicitize_auto(const Parametrization& map,
                                 const algebra::GroebnerOptions& options = {},
                                 std::string* fallback_reason = nullptr);

@@ -23,6 +23,7 @@
 #include <random>
 
 #include "algebra/error.h"
+#include "implicit/detail/modular_lifting.h"
 #include "implicit/implicitize.h"
 
 namespace locus::implicit {
@@ -226,10 +227,7 @@ ImplicitResult implicitize_by_interpolation(
     while (first.vector[pivot] == 0) {
         ++pivot;
     }
-    const std::size_t columns = support.size();
-    std::vector<algebra::Integer> residues(columns);
-    algebra::Integer modulus(1);
-    std::vector<Rational> previous, current(columns);
+    detail::NormalizedLifting lifting(support.size(), pivot);
     ImplicitResult result;
     bool done = false;
     ModularKernel k = first;
@@ -242,25 +240,13 @@ ImplicitResult implicitize_by_interpolation(
                 continue;  // unlucky prime
             }
         }
-        const ulong scale = n_invmod(k.vector[pivot], p);
-        for (std::size_t j = 0; j < columns; ++j) {
-            const ulong v = n_mulmod2_preinv(k.vector[j], scale, p, n_preinvert_limb(p));
-            fmpz_CRT_ui(residues[j].get(), residues[j].get(), modulus.get(), v, p, 0);
-        }
-        fmpz_mul_ui(modulus.get(), modulus.get(), p);
-        bool reconstructed = true;
-        for (std::size_t j = 0; j < columns && reconstructed; ++j) {
-            reconstructed =
-                fmpq_reconstruct_fmpz(current[j].get(), residues[j].get(), modulus.get()) != 0;
-        }
-        if (!reconstructed || current != previous) {
-            previous = current;
+        if (!lifting.add(k.vector, p)) {
             continue;
         }
         std::vector<std::pair<Rational, std::vector<std::uint32_t>>> terms;
-        for (std::size_t j = 0; j < columns; ++j) {
-            if (!current[j].is_zero()) {
-                terms.emplace_back(current[j], support[j]);
+        for (std::size_t j = 0; j < support.size(); ++j) {
+            if (!lifting.values()[j].is_zero()) {
+                terms.emplace_back(lifting.values()[j], support[j]);
             }
         }
         result.ring = algebra::PolyRing::make(map.coordinates, algebra::MonomialOrder::grevlex(n));
@@ -269,6 +255,7 @@ ImplicitResult implicitize_by_interpolation(
         if (vanishes_on(equation, map)) {
             result.equation = equation;
             result.generators = {equation};
+            result.proved_on_map = true;
             done = true;
         }
     }

@@ -5,6 +5,7 @@
 
 #include "algebra/error.h"
 #include "algebra/parse.h"
+#include "implicit/bezier_patch.h"
 
 namespace locus::implicit {
 namespace {
@@ -19,6 +20,20 @@ std::size_t first_non_space(std::string_view s, std::size_t from = 0) {
 }  // namespace
 
 Parametrization parse_parametrization(std::string_view text) {
+    // A `bezier:` line makes the file a patch given by control points (implicit/bezier_patch.h).
+    for (const auto& [raw, line] : algebra::split_lines(text)) {
+        const std::size_t start = first_non_space(raw);
+        std::string_view rest = raw.substr(start);
+        if (rest.starts_with("bezier")) {
+            rest.remove_prefix(6);
+            rest.remove_prefix(std::min(rest.size(), first_non_space(rest)));
+            if (rest.starts_with(":")) {
+                std::vector<std::string> names;
+                const BezierPatch patch = parse_bezier_param(text, &names);
+                return to_parametrization(patch, names);
+            }
+        }
+    }
     Parametrization result;
     const std::vector<std::string> allowed = {"x", "y", "z"};
     struct Assignment {

@@ -1,6 +1,13 @@
 #include "implicit/verify.h"
 
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+#include <flint/nmod_vec.h>
+#include <flint/ulong_extras.h>
+
 #include <algorithm>
+#include <array>
+#include <map>
 #include <span>
 
 #include "algebra/division.h"
@@ -54,6 +61,238 @@ Polynomial substituted(const Polynomial& f, std::span<const RationalFunction> co
     return reduce(total);
 }
 
+// Terms of a polynomial with integer coefficients (the polynomial times `scale`).
+struct IntegerTerms {
+    std::vector<algebra::Integer> coefficients;
+    std::vector<std::vector<std::uint32_t>> exponents;
+};
+
+IntegerTerms integer_terms(const Polynomial& f, const algebra::Integer& scale) {
+    IntegerTerms r;
+    for (std::size_t i = 0; i < f.num_terms(); ++i) {
+        const fmpq* q = f.coefficient(i).get();
+        algebra::Integer c;
+        fmpz_divexact(c.get(), scale.get(), fmpq_denref(q));
+        fmpz_mul(c.get(), c.get(), fmpq_numref(q));
+        r.coefficients.push_back(std::move(c));
+        r.exponents.push_back(f.exponents(i));
+    }
+    return r;
+}
+
+void lcm_of_denominators(const Polynomial& f, algebra::Integer& lcm) {
+    for (std::size_t i = 0; i < f.num_terms(); ++i) {
+        fmpz_lcm(lcm.get(), lcm.get(), fmpq_denref(f.coefficient(i).get()));
+    }
+}
+
+// f's coefficients laid out in the order of a nested Horner scheme over the monomials of total
+// degree ≤ D: for the first variable from exponent D down to 0, and within each, the same for
+// the remaining variables with the degree left. `horner` walks the layout in that order.
+void horner_layout(std::size_t k, std::size_t vars, long degree, std::vector<std::uint32_t>& e,
+                   std::map<std::vector<std::uint32_t>, std::size_t>& position) {
+    for (long d = degree; d >= 0; --d) {
+        e[k] = static_cast<std::uint32_t>(d);
+        if (k + 1 == vars) {
+            const std::size_t next = position.size();
+            position.emplace(e, next);
+        } else {
+            horner_layout(k + 1, vars, degree - d, e, position);
+        }
+    }
+    e[k] = 0;
+}
+
+// f at `kLanes` points at once: the lanes' Horner chains are independent, so the latency of
+// one modular multiplication overlaps with the others'.
+constexpr std::size_t kLanes = 4;
+using Lanes = std::array<ulong, kLanes>;
+
+Lanes horner(const ulong*& coefficient, std::size_t k, std::size_t vars, long degree,
+             const std::vector<Lanes>& x, nmod_t mod) {
+    Lanes result{};
+    for (long d = degree; d >= 0; --d) {
+        Lanes inner;
+        if (k + 1 == vars) {
+            inner.fill(*coefficient++);
+        } else {
+            inner = horner(coefficient, k + 1, vars, degree - d, x, mod);
+        }
+        for (std::size_t l = 0; l < kLanes; ++l) {
+            result[l] = nmod_add(nmod_mul(result[l], x[k][l], mod), inner[l], mod);
+        }
+    }
+    return result;
+}
+
+// g = Σ c_α P^α Q^(D−|α|) (f homogenized with the common denominator Q) is zero iff it
+// vanishes on the grid Π {0, …, B_j}; at a grid point its value is an integer once P and Q are
+// scaled to integer coefficients, and every coefficient of g is at most
+//     H = Σ |c_α| Π ‖Pᵢ‖₁^αᵢ ‖Q‖₁^(D−|α|)
+// in absolute value (‖·‖₁ the sum of the absolute values of the coefficients, which is
+// submultiplicative). So g = 0 iff g ≡ 0 modulo primes whose product exceeds H, and g ≡ 0 mod
+// p iff g vanishes on the grid over F_p (p > B_j): word-size evaluations, a proof.
+bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numerators,
+                      const Polynomial& common, const std::vector<long>& bound) {
+    const std::size_t n = numerators.size();
+    const std::size_t k = bound.size();
+    const long total_degree = f.total_degree();
+    algebra::Integer map_scale(1), f_scale(1);
+    for (const auto& p : numerators) {
+        lcm_of_denominators(p, map_scale);
+    }
+    lcm_of_denominators(common, map_scale);
+    lcm_of_denominators(f, f_scale);
+    std::vector<IntegerTerms> map_terms;  // P₁ … P_n, then Q
+    for (const auto& p : numerators) {
+        map_terms.push_back(integer_terms(p, map_scale));
+    }
+    map_terms.push_back(integer_terms(common, map_scale));
+    IntegerTerms f_terms = integer_terms(f, f_scale);
+    // Where a point has Q ≠ 0, g = Q^D · f(P/Q) and f is evaluated by a Horner scheme (one
+    // multiplication per monomial); the homogeneous sum is the fallback where Q = 0.
+    std::map<std::vector<std::uint32_t>, std::size_t> position;
+    {
+        std::vector<std::uint32_t> e(n, 0);
+        horner_layout(0, n, total_degree, e, position);
+    }
+    std::vector<std::size_t> term_position;
+    for (const auto& e : f_terms.exponents) {
+        term_position.push_back(position.at(e));
+    }
+    std::vector<ulong> layout(position.size());
+    std::vector<Lanes> quotients(n);
+    std::size_t lanes_used = 0;
+    for (std::size_t t = 0; t < f_terms.exponents.size(); ++t) {
+        long degree = 0;
+        for (const auto e : f_terms.exponents[t]) {
+            degree += e;
+        }
+        f_terms.exponents[t].push_back(static_cast<std::uint32_t>(total_degree - degree));
+    }
+    // The bound H, exactly.
+    std::vector<std::vector<algebra::Integer>> norm_powers(n + 1);
+    for (std::size_t i = 0; i <= n; ++i) {
+        algebra::Integer norm;
+        for (const auto& c : map_terms[i].coefficients) {
+            fmpz_t a;
+            fmpz_init(a);
+            fmpz_abs(a, c.get());
+            fmpz_add(norm.get(), norm.get(), a);
+            fmpz_clear(a);
+        }
+        norm_powers[i].push_back(algebra::Integer(1));
+        for (long e = 1; e <= total_degree; ++e) {
+            norm_powers[i].push_back(norm_powers[i].back() * norm);
+        }
+    }
+    algebra::Integer bound_h, term;
+    for (std::size_t t = 0; t < f_terms.coefficients.size(); ++t) {
+        fmpz_abs(term.get(), f_terms.coefficients[t].get());
+        for (std::size_t i = 0; i <= n; ++i) {
+            fmpz_mul(term.get(), term.get(), norm_powers[i][f_terms.exponents[t][i]].get());
+        }
+        fmpz_add(bound_h.get(), bound_h.get(), term.get());
+    }
+    algebra::Integer product(1);
+    ulong p = n_nextprime(UWORD(1) << 62, 1);
+    std::vector<ulong> f_mod(f_terms.coefficients.size());
+    std::vector<std::vector<ulong>> map_mod(n + 1);
+    std::vector<std::vector<ulong>> parameter_powers(k), value_powers(n + 1);
+    std::vector<long> index(k);
+    while (fmpz_cmp(product.get(), bound_h.get()) <= 0) {
+        nmod_t mod;
+        nmod_init(&mod, p);
+        std::fill(layout.begin(), layout.end(), 0);
+        for (std::size_t t = 0; t < f_mod.size(); ++t) {
+            f_mod[t] = fmpz_fdiv_ui(f_terms.coefficients[t].get(), p);
+            layout[term_position[t]] = f_mod[t];
+        }
+        for (std::size_t i = 0; i <= n; ++i) {
+            map_mod[i].resize(map_terms[i].coefficients.size());
+            for (std::size_t t = 0; t < map_mod[i].size(); ++t) {
+                map_mod[i][t] = fmpz_fdiv_ui(map_terms[i].coefficients[t].get(), p);
+            }
+        }
+        std::fill(index.begin(), index.end(), 0);
+        while (true) {
+            for (std::size_t j = 0; j < k; ++j) {
+                // Powers of the parameter value, up to the largest exponent in the map.
+                parameter_powers[j].assign(1, 1);
+            }
+            std::vector<ulong> values(n + 1);
+            for (std::size_t i = 0; i <= n; ++i) {
+                ulong sum = 0;
+                for (std::size_t t = 0; t < map_mod[i].size(); ++t) {
+                    ulong v = map_mod[i][t];
+                    for (std::size_t j = 0; j < k; ++j) {
+                        const std::uint32_t e = map_terms[i].exponents[t][j];
+                        auto& powers = parameter_powers[j];
+                        while (powers.size() <= e) {
+                            powers.push_back(
+                                nmod_mul(powers.back(), static_cast<ulong>(index[j]), mod));
+                        }
+                        v = nmod_mul(v, powers[e], mod);
+                    }
+                    sum = nmod_add(sum, v, mod);
+                }
+                values[i] = sum;
+            }
+            ulong g = 0;
+            if (values[n] != 0) {
+                const ulong inverse = n_invmod(values[n], p);
+                for (std::size_t i = 0; i < n; ++i) {
+                    quotients[i][lanes_used] = nmod_mul(values[i], inverse, mod);
+                }
+                ++lanes_used;
+            } else {
+                for (std::size_t i = 0; i <= n; ++i) {
+                    value_powers[i].assign(1, 1);
+                    for (long e = 1; e <= total_degree; ++e) {
+                        value_powers[i].push_back(nmod_mul(value_powers[i].back(), values[i], mod));
+                    }
+                }
+                for (std::size_t t = 0; t < f_mod.size(); ++t) {
+                    ulong v = f_mod[t];
+                    const auto& e = f_terms.exponents[t];
+                    for (std::size_t i = 0; i <= n; ++i) {
+                        v = nmod_mul(v, value_powers[i][e[i]], mod);
+                    }
+                    g = nmod_add(g, v, mod);
+                }
+            }
+            std::size_t j = 0;
+            while (j < k && ++index[j] > bound[j]) {
+                index[j] = 0;
+                ++j;
+            }
+            const bool last = j == k;
+            if (lanes_used == kLanes || (last && lanes_used > 0)) {
+                for (std::size_t l = lanes_used; l < kLanes; ++l) {  // pad with a used lane
+                    for (std::size_t i = 0; i < n; ++i) {
+                        quotients[i][l] = quotients[i][0];
+                    }
+                }
+                const ulong* walk = layout.data();
+                const Lanes at = horner(walk, 0, n, total_degree, quotients, mod);
+                for (const ulong v : at) {
+                    g |= v;
+                }
+                lanes_used = 0;
+            }
+            if (g != 0) {
+                return false;
+            }
+            if (last) {
+                break;
+            }
+        }
+        fmpz_mul_ui(product.get(), product.get(), p);
+        p = n_nextprime(p, 1);
+    }
+    return true;
+}
+
 }  // namespace
 
 bool vanishes_on(const Polynomial& f, const Parametrization& map) {
@@ -62,9 +301,10 @@ bool vanishes_on(const Polynomial& f, const Parametrization& map) {
     // is a polynomial whose degree in each parameter u_j is at most
     // B_j = D · max(maxᵢ deg_{u_j} Pᵢ, deg_{u_j} Q), and f vanishes on the map iff g = 0. A
     // polynomial of degree ≤ B_j in u_j that vanishes on a grid of B_j + 1 values per parameter
-    // is zero, so evaluating g exactly on that grid is a proof, not a test. The bicubic patch's
-    // degree-18 equation is checked on 55 × 55 points in seconds, where expanding g
-    // symbolically took a minute. Grids beyond 200 000 points fall back to the expansion.
+    // is zero, so checking that g vanishes on that grid is a proof, not a test; it is checked
+    // modulo enough primes to exceed a bound on g's coefficients (vanishes_on_grid). The bicubic
+    // patch's degree-18 equation is checked on 55 × 55 points; grids beyond 200 000 points fall
+    // back to the symbolic expansion.
     const RingPtr& params = map.parameter_ring;
     const std::size_t n = map.coordinates.size();
     const std::size_t k = params->num_vars();
@@ -99,52 +339,7 @@ bool vanishes_on(const Polynomial& f, const Parametrization& map) {
     if (points > 200000) {
         return substituted(f, map.components, map.parameter_ring, {}).is_zero();
     }
-    // f homogenized with an extra variable w (index n) standing for Q.
-    std::vector<std::string> names = f.ring()->variable_names();
-    names.push_back("w_homogenizing");
-    const RingPtr homogeneous_ring =
-        algebra::PolyRing::make(names, algebra::MonomialOrder::grevlex(n + 1));
-    std::vector<std::pair<Rational, std::vector<std::uint32_t>>> terms;
-    for (std::size_t t = 0; t < f.num_terms(); ++t) {
-        std::vector<std::uint32_t> e = f.exponents(t);
-        long degree = 0;
-        for (const auto x : e) {
-            degree += x;
-        }
-        e.push_back(static_cast<std::uint32_t>(total_degree - degree));
-        terms.emplace_back(f.coefficient(t), std::move(e));
-    }
-    const Polynomial homogeneous = Polynomial::from_terms(homogeneous_ring, std::move(terms));
-    algebra::FlintContext context(homogeneous_ring);
-    algebra::FlintPolynomial flint_f = algebra::to_fmpq_mpoly(homogeneous, context);
-    std::vector<Rational> values(n + 1), point(k);
-    std::vector<fmpq*> value_pointers(n + 1);
-    std::vector<long> index(k, 0);
-    Rational result;
-    while (true) {
-        for (std::size_t j = 0; j < k; ++j) {
-            point[j] = Rational(index[j] - bound[j] / 2);  // centred: smaller numbers
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            values[i] = numerators[i].evaluate(point);
-            value_pointers[i] = values[i].get();
-        }
-        values[n] = common.evaluate(point);
-        value_pointers[n] = values[n].get();
-        fmpq_mpoly_evaluate_all_fmpq(result.get(), flint_f.get(), value_pointers.data(),
-                                     context.get());
-        if (!result.is_zero()) {
-            return false;
-        }
-        std::size_t j = 0;
-        while (j < k && ++index[j] > bound[j]) {
-            index[j] = 0;
-            ++j;
-        }
-        if (j == k) {
-            return true;
-        }
-    }
+    return vanishes_on_grid(f, numerators, common, bound);
 }
 
 bool vanishes_on_map_as_written(const Polynomial& f, const Parametrization& map) {
