@@ -1,10 +1,14 @@
 // `locus-bench implicit`: every case of bench/data/implicit/SUITE.txt by each route of
 // `locus implicitize`, and by Singular's eliminate on the same elimination ideal when Singular is
 // installed. Gröbner runs under a deadline of --limit seconds, Singular under timeout(1) with the
-// same limit; `auto` is timed as `locus implicitize` runs it.
+// same limit; `auto` is timed as `locus implicitize` runs it. A case with a `.bpt` file instead
+// of a `.param` (the teapot) is a set of patches: `auto` and `dixon` are timed over all of them
+// (degree and terms are the largest), the other routes are left out — per patch they take the
+// minutes the bicubic row shows.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -16,6 +20,8 @@
 #include "bench/benches.h"
 #include "bench/singular.h"
 #include "cli/command_support.h"
+#include "implicit/bezier_patch.h"
+#include "implicit/dixon.h"
 #include "implicit/implicitize.h"
 
 namespace locus::bench {
@@ -42,11 +48,12 @@ int run_implicit_bench(const ImplicitBenchArgs& args) {
     const std::vector<std::string> cases = suite_case_names(dir, args.suite.cases);
     const bool with_singular = args.singular != "off" && cli::on_path(args.singular);
     if (args.suite.csv) {
-        std::cout << "case,degree,terms,auto_method,auto_seconds,interpolate_seconds,"
+        std::cout << "case,degree,terms,auto_method,auto_seconds,dixon_seconds,interpolate_seconds,"
                      "groebner_seconds,resultant_seconds,singular_eliminate_seconds\n";
     } else {
-        std::printf("%-18s %6s %6s %-12s %10s %10s %10s %10s %10s\n", "case", "degree", "terms",
-                    "auto", "auto s", "interp. s", "groebner s", "result. s", "Singular s");
+        std::printf("%-28s %6s %6s %-12s %10s %10s %10s %10s %10s %10s\n", "case", "degree",
+                    "terms", "auto", "auto s", "dixon s", "interp. s", "groebner s", "result. s",
+                    "Singular s");
     }
     auto seconds_since = [](std::chrono::steady_clock::time_point t) {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -63,15 +70,59 @@ int run_implicit_bench(const ImplicitBenchArgs& args) {
         }
     };
     for (const auto& name : cases) {
-        const implicit::Parametrization map =
-            implicit::parse_parametrization(cli::read_input(dir + "/" + name + ".param"));
+        std::vector<implicit::Parametrization> maps;
+        const bool patches = std::filesystem::exists(dir + "/" + name + ".bpt");
+        if (patches) {
+            for (const auto& patch :
+                 implicit::parse_bpt(cli::read_input(dir + "/" + name + ".bpt"))) {
+                maps.push_back(implicit::to_parametrization(patch));
+            }
+        } else {
+            maps.push_back(
+                implicit::parse_parametrization(cli::read_input(dir + "/" + name + ".param")));
+        }
+        const implicit::Parametrization& map = maps.front();
         algebra::GroebnerOptions options;
         std::optional<implicit::ImplicitResult> result;
+        long degree = -1;
+        std::size_t terms = 0;
+        std::string method = "-";
         options.deadline = cli::deadline_after(args.limit_seconds);
-        const double auto_seconds =
-            timed([&] { result = implicit::implicitize_auto(map, options); });
-        const double interpolate_seconds =
-            timed([&] { implicit::implicitize_by_interpolation(map); });
+        const double auto_seconds = timed([&] {
+            for (const auto& m : maps) {
+                result = implicit::implicitize_auto(m, options);
+                if (result->equation) {
+                    degree = std::max(degree, result->equation->total_degree());
+                    terms = std::max(terms, result->equation->num_terms());
+                }
+                method = maps.size() > 1 ? "mixed" : result->method;
+            }
+        });
+        options.deadline = cli::deadline_after(args.limit_seconds);
+        const double dixon_seconds = timed([&] {
+            for (const auto& m : maps) {
+                implicit::implicitize_by_dixon(m, options.deadline);
+            }
+        });
+        if (patches) {
+            if (args.suite.csv) {
+                std::cout << name << "," << degree << "," << terms << "," << method << ","
+                          << auto_seconds << "," << dixon_seconds << ",-1,-1,-1,-2\n";
+            } else {
+                std::printf("%-28s %6ld %6zu %-12s %10s %10s %10s %10s %10s %10s\n",
+                            (name + " (" + std::to_string(maps.size()) + " patches)").c_str(),
+                            degree, terms, method.c_str(),
+                            seconds_or_limit(auto_seconds, args.limit_seconds).c_str(),
+                            seconds_or_limit(dixon_seconds, args.limit_seconds).c_str(), "-", "-",
+                            "-", "-");
+            }
+            std::cout.flush();
+            continue;
+        }
+        const double interpolate_seconds = [&] {
+            options.deadline = cli::deadline_after(args.limit_seconds);
+            return timed([&] { implicit::implicitize_by_interpolation(map, options.deadline); });
+        }();
         // FLINT's resultants cannot be interrupted (the bicubic patch runs for many minutes):
         // time them in a child process that is killed at the limit.
         const double resultant_seconds = [&] {
@@ -86,9 +137,6 @@ int run_implicit_bench(const ImplicitBenchArgs& args) {
         const double groebner_seconds = timed([&] { implicit::implicitize(map, options); });
         const double singular_seconds =
             with_singular ? time_singular_eliminate(args.singular, map, args.limit_seconds) : -2;
-        const long degree = result && result->equation ? result->equation->total_degree() : -1;
-        const std::size_t terms = result && result->equation ? result->equation->num_terms() : 0;
-        const std::string method = result ? result->method : "-";
         const std::string singular_text =
             singular_seconds == -2 ? "-" : seconds_or_limit(singular_seconds, args.limit_seconds);
         auto shown = [&](double seconds) {
@@ -96,12 +144,13 @@ int run_implicit_bench(const ImplicitBenchArgs& args) {
         };
         if (args.suite.csv) {
             std::cout << name << "," << degree << "," << terms << "," << method << ","
-                      << auto_seconds << "," << interpolate_seconds << "," << groebner_seconds
-                      << "," << resultant_seconds << "," << singular_seconds << "\n";
+                      << auto_seconds << "," << dixon_seconds << "," << interpolate_seconds << ","
+                      << groebner_seconds << "," << resultant_seconds << "," << singular_seconds
+                      << "\n";
         } else {
-            std::printf("%-18s %6ld %6zu %-12s %10s %10s %10s %10s %10s\n", name.c_str(), degree,
-                        terms, method.c_str(), shown(auto_seconds).c_str(),
-                        shown(interpolate_seconds).c_str(),
+            std::printf("%-28s %6ld %6zu %-12s %10s %10s %10s %10s %10s %10s\n", name.c_str(),
+                        degree, terms, method.c_str(), shown(auto_seconds).c_str(),
+                        shown(dixon_seconds).c_str(), shown(interpolate_seconds).c_str(),
                         groebner_seconds < 0
                             ? (">" + std::to_string(std::lround(args.limit_seconds))).c_str()
                             : shown(groebner_seconds).c_str(),

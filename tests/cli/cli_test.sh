@@ -165,7 +165,7 @@ expect "render: bad flag value" 2 "--size '12': expected WIDTHxHEIGHT" -- \
     "$locus" render "x^2+y^2+z^2-1" --size 12 -o "$tmp/size.png"
 expect "render: unknown method" 2 "--method: 'magic': expected certified, sturm, bernstein, laguerre, eigen, sphere-gradient, sphere-lipschitz or exact" -- \
     "$locus" render "x^2+y^2+z^2-1" --method magic -o "$tmp/m.png"
-expect "implicitize: unknown method" 2 "--method: 'fast': expected auto, groebner, resultant or interpolate" -- \
+expect "implicitize: unknown method" 2 "--method: 'fast': expected auto, groebner, resultant, interpolate or dixon" -- \
     "$locus" implicitize -p t "x = t" "y = t^2" --method fast
 expect "render: --shadows takes on or off" 2 "--shadows: 'yes': expected on or off" -- \
     "$locus" render "x^2+y^2+z^2-1" --shadows yes -o "$tmp/m.png"
@@ -194,6 +194,20 @@ if [[ -e "$tmp/timeout.png" ]]; then
 fi
 expect "resultant honours --timeout" 3 "timeout: stopped after 1 s" -- \
     "$locus" implicitize bench/data/implicit/bezier_triangle3.param --method resultant --timeout 1
+expect "the teapot: one verified equation a patch" 0 "" -- bash -c \
+    "\"$locus\" implicitize bench/data/implicit/teapot.bpt 2>\"$tmp/teapot.err\" | grep -c . | grep -qx 32 && test \$(grep -c 'verified: vanishes' \"$tmp/teapot.err\") = 32"
+expect "the bicubic patch by the Dixon route" 0 "degree 18, 1330 terms, irreducible" -- \
+    "$locus" implicitize bench/data/implicit/bezier_bicubic.param
+printf '1\n1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 one\n' >"$tmp/bad.bpt"
+expect "a malformed .bpt names line and column" 2 "line 6, column 5: expected a decimal number" -- \
+    "$locus" implicitize "$tmp/bad.bpt"
+printf 'bezier: 1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$tmp/bilinear.param"
+expect "a bezier: patch in a .param" 0 "" -- bash -c \
+    "\"$locus\" implicitize $tmp/bilinear.param 2>/dev/null | grep -qx 'x\*y-z'"
+expect "dixon honours --timeout" 3 "timeout" -- \
+    "$locus" implicitize bench/data/implicit/bezier_bicubic.param --method dixon --timeout 0.2
+expect "dixon refuses curves" 2 "applies to surfaces" -- \
+    "$locus" implicitize -p t --method dixon "x = t" "y = t^2"
 expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z" -- \
     "$locus" implicitize bench/data/implicit/steiner_roman.param --method resultant --timeout 20
 expect "trace prints hits and misses" 0 "" -- bash -c \
