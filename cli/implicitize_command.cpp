@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
@@ -25,6 +26,7 @@ struct ImplicitizeArgs {
     std::string params;
     std::string format = "normalized";
     std::string method = "auto";
+    int threads = 0;  // 0: all hardware threads
     ProcessLimitArgs limits;
 };
 
@@ -97,7 +99,7 @@ void implicitize_one(const ImplicitizeArgs& args, const implicit::Parametrizatio
     } else if (args.method == "interpolate") {
         found = implicit::implicitize_by_interpolation(map, options.deadline);
     } else if (args.method == "dixon") {
-        found = implicit::implicitize_by_dixon(map, options.deadline);
+        found = implicit::implicitize_by_dixon(map, options.deadline, options.threads);
     }
     const implicit::ImplicitResult r =
         found ? std::move(*found) : implicit::implicitize(map, options);
@@ -153,9 +155,16 @@ int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
     const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = algebra::parse_output_format(args.format);
     const auto maps = read_maps(args);
+    if (args.threads < 0) {
+        throw CommandFailure(exit_input, "--threads " + std::to_string(args.threads) +
+                                             ": expected a positive count, or 0 for all cores");
+    }
     algebra::GroebnerOptions options;
     options.deadline = deadline;
     options.progress = progress.groebner("implicitize");
+    options.threads = args.threads > 0
+                          ? args.threads
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     for (const auto& [label, map] : maps) {
         implicitize_one(args, map, label, format, options);
         progress.clear();
@@ -184,6 +193,9 @@ void add_implicitize_command(CLI::App& app, CommandContext& context) {
                 {"dixon", "the Dixon determinant modulo primes (surfaces)"}},
                "the route");
     add_choice(cmd, "--format", args->format, output_format_choices(), "output");
+    cmd->add_option("--threads", args->threads,
+                    "threads for the dixon route's primes and the proofs (0: all cores, the "
+                    "default)");
     add_process_limit_options(cmd, args->limits);
     cmd->callback(
         [args, &context] { context.exit_code = run_implicitize(*args, context.progress); });

@@ -13,6 +13,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/patch_surfaces.h"
 #include "cli/process_limits.h"
 #include "cli/surface_input.h"
 #include "render/framing.h"
@@ -131,7 +132,8 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
         args.input.size() > 5 && args.input.compare(args.input.size() - 5, 5, ".toml") == 0;
     if (args.input.empty() == args.param.empty()) {
         throw CommandFailure(exit_input,
-                             "render: give an equation, a scene file (.toml) or --param FILE");
+                             "render: give an equation, a scene file (.toml), patches (.bpt) or "
+                             "--param FILE");
     }
     render::Scene scene;
     if (is_scene_file) {
@@ -156,6 +158,11 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
                                                ? message
                                                : args.input + ": " + message);
         }
+    } else if (const std::string patch_path =
+                   args.input.ends_with(".bpt") ? args.input : args.param;
+               !patch_path.empty() && holds_patches(patch_path, read_input(patch_path))) {
+        // Patches: one trimmed surface each, clipped to its control points' box.
+        scene.surfaces = patch_surfaces(patch_path, read_input(patch_path), deadline);
     } else {
         render::Surface surface;
         if (args.param.empty()) {
@@ -431,7 +438,8 @@ void add_render_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Ray-trace algebraic surfaces f(x,y,z) = 0");
     cmd->add_option("input", args->input,
-                    "an equation such as \"x^2+y^2+z^2-1\", or a scene file ending in .toml");
+                    "an equation such as \"x^2+y^2+z^2-1\", a scene file ending in .toml, or "
+                    "Bezier patches in a .bpt file (rendered trimmed to their domains)");
     cmd->add_option("--param", args->param,
                     "render the implicit equation of this parametrization file");
     cmd->add_option("-o,--output", args->output,

@@ -306,13 +306,7 @@ BezierPatch parse_bezier_param(std::string_view text, std::vector<std::string>* 
     return patch;
 }
 
-Parametrization to_parametrization(const BezierPatch& patch,
-                                   const std::vector<std::string>& parameter_names) {
-    Parametrization map;
-    map.parameter_ring =
-        algebra::PolyRing::make(parameter_names, algebra::MonomialOrder::grevlex(2));
-    map.coordinates = {"x", "y", "z"};
-    const auto& ring = map.parameter_ring;
+std::array<Polynomial, 4> homogeneous_map(const BezierPatch& patch, const algebra::RingPtr& ring) {
     const Polynomial one = Polynomial::constant(ring, Rational(1));
     const Polynomial s = Polynomial::variable(ring, 0);
     const Polynomial t = Polynomial::variable(ring, 1);
@@ -341,26 +335,38 @@ Parametrization to_parametrization(const BezierPatch& patch,
             }
         }
     }
-    Polynomial denominator(ring);
-    std::array<Polynomial, 3> numerators{Polynomial(ring), Polynomial(ring), Polynomial(ring)};
+    std::array<Polynomial, 4> map{Polynomial(ring), Polynomial(ring), Polynomial(ring),
+                                  Polynomial(ring)};
     for (std::size_t p = 0; p < basis.size(); ++p) {
         const auto& point = patch.points[p];
         const Polynomial weighted = Polynomial::constant(ring, point[3]) * basis[p];
         for (std::size_t c = 0; c < 3; ++c) {
-            numerators[c] += Polynomial::constant(ring, point[c]) * weighted;
+            map[c] += Polynomial::constant(ring, point[c]) * weighted;
         }
-        denominator += weighted;
+        map[3] += weighted;
     }
+    return map;
+}
+
+Parametrization to_parametrization(const BezierPatch& patch,
+                                   const std::vector<std::string>& parameter_names) {
+    Parametrization map;
+    map.parameter_ring =
+        algebra::PolyRing::make(parameter_names, algebra::MonomialOrder::grevlex(2));
+    map.coordinates = {"x", "y", "z"};
+    const auto& ring = map.parameter_ring;
+    std::array<Polynomial, 4> sums = homogeneous_map(patch, ring);
     if (!patch.rational) {
         // Equal weights cancel: Σ w B = w.
-        denominator = one;
-        const Rational w = patch.points.front()[3];
-        for (auto& numerator : numerators) {
-            numerator = numerator * Polynomial::constant(ring, Rational(1) / w);
+        const Polynomial inverse =
+            Polynomial::constant(ring, Rational(1) / patch.points.front()[3]);
+        for (std::size_t c = 0; c < 3; ++c) {
+            sums[c] = sums[c] * inverse;
         }
+        sums[3] = Polynomial::constant(ring, Rational(1));
     }
     for (std::size_t c = 0; c < 3; ++c) {
-        map.components.emplace_back(numerators[c], denominator);
+        map.components.emplace_back(sums[c], sums[3]);
     }
     return map;
 }

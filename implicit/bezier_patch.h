@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "algebra/polynomial.h"
 #include "algebra/rational.h"
 #include "implicit/parametrization.h"
 
@@ -47,6 +48,12 @@ bool looks_like_bpt(std::string_view text);
 // The `.param` form (see above); called by parse_parametrization when the file has a
 // `bezier:` line.
 BezierPatch parse_bezier_param(std::string_view text, std::vector<std::string>* parameter_names);
+
+// (Σ w·P·B, Σ w·B) over Q[params]: the numerators of x, y, z and their common denominator, as
+// sums over the Bernstein basis B (before any cancellation; the denominator is a constant w
+// for polynomial patches with equal weights).
+std::array<algebra::Polynomial, 4> homogeneous_map(const BezierPatch& patch,
+                                                   const algebra::RingPtr& ring);
 
 // x = Σ w·P·B / Σ w·B with the Bernstein basis B (the denominator is 1 for polynomial patches),
 // over Q[params] (default s, t).

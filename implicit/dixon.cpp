@@ -7,6 +7,9 @@
 #include <flint/nmod_vec.h>
 #include <flint/ulong_extras.h>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <array>
 #include <random>
 
@@ -353,7 +356,7 @@ bool image_is_surface(const std::array<Polynomial, 4>& pw) {
 
 ImplicitResult implicitize_by_dixon(const Parametrization& map,
                                     std::optional<std::chrono::steady_clock::time_point> deadline,
-                                    std::size_t max_size) {
+                                    int threads, std::size_t max_size) {
     const auto start = std::chrono::steady_clock::now();
     auto check_deadline = [&] {
         if (deadline && std::chrono::steady_clock::now() > *deadline) {
@@ -488,32 +491,58 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
     }
     std::optional<detail::NormalizedLifting> lifting;
     std::size_t pivot = 0;
-    std::vector<ulong> image(support.size());
     bool stable = false;
-    for (int prime_count = 0; prime_count < 2000 && !stable; ++prime_count) {
-        if (prime_count > 0) {
-            check_deadline();
-            p = n_nextprime(p, 1);
-        }
+    // The determinant modulo one prime, restricted to the support.
+    const auto image_modulo = [&](ulong prime) {
         const std::array<ModMatrix, 4> reduced{
-            reduce(matrices[0], rows, columns, p), reduce(matrices[1], rows, columns, p),
-            reduce(matrices[2], rows, columns, p), reduce(matrices[3], rows, columns, p)};
-        const std::vector<ulong> dense = pencil_determinant(reduced, p);
+            reduce(matrices[0], rows, columns, prime), reduce(matrices[1], rows, columns, prime),
+            reduce(matrices[2], rows, columns, prime), reduce(matrices[3], rows, columns, prime)};
+        const std::vector<ulong> dense = pencil_determinant(reduced, prime);
+        std::vector<ulong> image(support.size());
         for (std::size_t i = 0; i < support.size(); ++i) {
             image[i] = dense[place[i]];
         }
-        if (!lifting) {
-            while (pivot < image.size() && image[pivot] == 0) {
-                ++pivot;
-            }
-            if (pivot == image.size()) {
-                throw Error("the Dixon determinant vanishes identically");
-            }
-            lifting.emplace(support.size(), pivot);
-        } else if (image[pivot] == 0) {
-            continue;  // an unlucky prime
+        return image;
+    };
+    // Primes in batches of `threads`, lifted in order: at most threads − 1 images beyond the
+    // stable one are wasted.
+    const std::size_t batch = static_cast<std::size_t>(std::max(1, threads));
+    tbb::task_arena arena(static_cast<int>(batch));
+    std::vector<ulong> primes;
+    std::vector<std::vector<ulong>> images;
+    for (std::size_t used = 0; used < 2000 && !stable; used += batch) {
+        if (used > 0) {
+            check_deadline();
         }
-        stable = lifting->add(image, p);
+        primes.clear();
+        for (std::size_t i = 0; i < batch; ++i) {
+            primes.push_back(p);
+            p = n_nextprime(p, 1);
+        }
+        images.assign(batch, {});
+        if (batch == 1) {
+            images[0] = image_modulo(primes[0]);
+        } else {
+            arena.execute([&] {
+                tbb::parallel_for(std::size_t{0}, batch,
+                                  [&](std::size_t i) { images[i] = image_modulo(primes[i]); });
+            });
+        }
+        for (std::size_t i = 0; i < batch && !stable; ++i) {
+            const std::vector<ulong>& image = images[i];
+            if (!lifting) {
+                while (pivot < image.size() && image[pivot] == 0) {
+                    ++pivot;
+                }
+                if (pivot == image.size()) {
+                    throw Error("the Dixon determinant vanishes identically");
+                }
+                lifting.emplace(support.size(), pivot);
+            } else if (image[pivot] == 0) {
+                continue;  // an unlucky prime
+            }
+            stable = lifting->add(image, primes[i]);
+        }
     }
     if (!stable) {
         throw Error("the Dixon route did not converge within 2000 primes");
@@ -531,7 +560,7 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
     check_deadline();
     const algebra::Factorization factors = algebra::factor(determinant);
     for (const auto& [factor, multiplicity] : factors.factors) {
-        if (factor.total_degree() > 0 && vanishes_on(factor, map)) {
+        if (factor.total_degree() > 0 && vanishes_on(factor, map, threads)) {
             result.equation = factor;
             break;
         }

@@ -25,10 +25,11 @@ namespace locus::implicit {
 
 // Throws InputError for maps that are not surfaces, Error when the route gives up (the
 // determinant vanishes, no factor vanishes on the map, the matrix is larger than `max_size`),
-// Timeout when `deadline` passes (checked per prime).
+// Timeout when `deadline` passes (checked per batch of primes). `threads` primes are computed
+// at a time, and the proof runs on as many threads.
 ImplicitResult implicitize_by_dixon(
     const Parametrization& map,
-    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt,
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt, int threads = 1,
     std::size_t max_size = 72);
 
 }  // namespace locus::implicit

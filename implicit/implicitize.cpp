@@ -258,7 +258,7 @@ ImplicitResult implicitize_auto(const Parametrization& map, const algebra::Groeb
             // where interpolation needs an elimination of the whole support per prime (the
             // bicubic patch: 18 × 18 pencils against a 1330-column kernel).
             try {
-                return implicitize_by_dixon(map, options.deadline);
+                return implicitize_by_dixon(map, options.deadline, options.threads);
             } catch (const Timeout&) {
                 throw;
             } catch (const Error& e) {

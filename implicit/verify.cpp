@@ -5,8 +5,12 @@
 #include <flint/nmod_vec.h>
 #include <flint/ulong_extras.h>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <map>
 #include <span>
 
@@ -133,7 +137,7 @@ Lanes horner(const ulong*& coefficient, std::size_t k, std::size_t vars, long de
 // submultiplicative). So g = 0 iff g ≡ 0 modulo primes whose product exceeds H, and g ≡ 0 mod
 // p iff g vanishes on the grid over F_p (p > B_j): word-size evaluations, a proof.
 bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numerators,
-                      const Polynomial& common, const std::vector<long>& bound) {
+                      const Polynomial& common, const std::vector<long>& bound, int threads) {
     const std::size_t n = numerators.size();
     const std::size_t k = bound.size();
     const long total_degree = f.total_degree();
@@ -160,9 +164,6 @@ bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numera
     for (const auto& e : f_terms.exponents) {
         term_position.push_back(position.at(e));
     }
-    std::vector<ulong> layout(position.size());
-    std::vector<Lanes> quotients(n);
-    std::size_t lanes_used = 0;
     for (std::size_t t = 0; t < f_terms.exponents.size(); ++t) {
         long degree = 0;
         for (const auto e : f_terms.exponents[t]) {
@@ -194,33 +195,42 @@ bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numera
         }
         fmpz_add(bound_h.get(), bound_h.get(), term.get());
     }
+    // The primes, then one independent check per prime (on `threads` threads); the first
+    // prime that sees a non-zero value settles the answer.
+    std::vector<ulong> primes;
     algebra::Integer product(1);
-    ulong p = n_nextprime(UWORD(1) << 62, 1);
-    std::vector<ulong> f_mod(f_terms.coefficients.size());
-    std::vector<std::vector<ulong>> map_mod(n + 1);
-    std::vector<std::vector<ulong>> parameter_powers(k), value_powers(n + 1);
-    std::vector<long> index(k);
-    while (fmpz_cmp(product.get(), bound_h.get()) <= 0) {
+    for (ulong p = n_nextprime(UWORD(1) << 62, 1); fmpz_cmp(product.get(), bound_h.get()) <= 0;
+         p = n_nextprime(p, 1)) {
+        primes.push_back(p);
+        fmpz_mul_ui(product.get(), product.get(), p);
+    }
+    std::atomic<bool> nonzero{false};
+    const auto vanishes_modulo = [&](ulong p) {
         nmod_t mod;
         nmod_init(&mod, p);
-        std::fill(layout.begin(), layout.end(), 0);
+        std::vector<ulong> layout(position.size()), f_mod(f_terms.coefficients.size());
         for (std::size_t t = 0; t < f_mod.size(); ++t) {
             f_mod[t] = fmpz_fdiv_ui(f_terms.coefficients[t].get(), p);
             layout[term_position[t]] = f_mod[t];
         }
+        std::vector<std::vector<ulong>> map_mod(n + 1);
         for (std::size_t i = 0; i <= n; ++i) {
-            map_mod[i].resize(map_terms[i].coefficients.size());
-            for (std::size_t t = 0; t < map_mod[i].size(); ++t) {
-                map_mod[i][t] = fmpz_fdiv_ui(map_terms[i].coefficients[t].get(), p);
+            for (const auto& c : map_terms[i].coefficients) {
+                map_mod[i].push_back(fmpz_fdiv_ui(c.get(), p));
             }
         }
-        std::fill(index.begin(), index.end(), 0);
-        while (true) {
+        std::vector<std::vector<ulong>> parameter_powers(k), value_powers(n + 1);
+        std::vector<Lanes> quotients(n);
+        std::vector<ulong> values(n + 1);
+        std::size_t lanes_used = 0;
+        std::vector<long> index(k, 0);
+        for (std::size_t point = 0;; ++point) {
+            if (point % 256 == 0 && nonzero.load(std::memory_order_relaxed)) {
+                return false;  // another prime has already answered
+            }
             for (std::size_t j = 0; j < k; ++j) {
-                // Powers of the parameter value, up to the largest exponent in the map.
                 parameter_powers[j].assign(1, 1);
             }
-            std::vector<ulong> values(n + 1);
             for (std::size_t i = 0; i <= n; ++i) {
                 ulong sum = 0;
                 for (std::size_t t = 0; t < map_mod[i].size(); ++t) {
@@ -281,21 +291,33 @@ bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numera
                 lanes_used = 0;
             }
             if (g != 0) {
+                nonzero = true;
                 return false;
             }
             if (last) {
-                break;
+                return true;
             }
         }
-        fmpz_mul_ui(product.get(), product.get(), p);
-        p = n_nextprime(p, 1);
+    };
+    if (threads <= 1 || primes.size() == 1) {
+        for (const ulong p : primes) {
+            if (!vanishes_modulo(p)) {
+                return false;
+            }
+        }
+        return true;
     }
-    return true;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, primes.size(),
+                          [&](std::size_t i) { vanishes_modulo(primes[i]); });
+    });
+    return !nonzero.load();
 }
 
 }  // namespace
 
-bool vanishes_on(const Polynomial& f, const Parametrization& map) {
+bool vanishes_on(const Polynomial& f, const Parametrization& map, int threads) {
     // Over a common denominator Q = Π qᵢ with Pᵢ = pᵢ·Π_{j≠i} qⱼ, and D = deg f,
     //     g(u) = Σ c_α P(u)^α Q(u)^(D−|α|)   (f homogenized with Q)
     // is a polynomial whose degree in each parameter u_j is at most
@@ -339,7 +361,7 @@ bool vanishes_on(const Polynomial& f, const Parametrization& map) {
     if (points > 200000) {
         return substituted(f, map.components, map.parameter_ring, {}).is_zero();
     }
-    return vanishes_on_grid(f, numerators, common, bound);
+    return vanishes_on_grid(f, numerators, common, bound, threads);
 }
 
 bool vanishes_on_map_as_written(const Polynomial& f, const Parametrization& map) {

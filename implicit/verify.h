@@ -14,8 +14,9 @@
 namespace locus::implicit {
 
 // Does f vanish identically on the (rational) parametrization? f(x) with xᵢ = pᵢ/qᵢ
-// substituted, times the denominators' powers, must be the zero polynomial. Exact.
-bool vanishes_on(const algebra::Polynomial& f, const Parametrization& map);
+// substituted, times the denominators' powers, must be the zero polynomial. Exact: a proof by
+// evaluation modulo primes past a coefficient bound, checked on `threads` threads.
+bool vanishes_on(const algebra::Polynomial& f, const Parametrization& map, int threads = 1);
 
 // Does f vanish identically on the map as written (the same as vanishes_on for rational maps;
 // for angles, on sin u and cos u themselves)? Exact.

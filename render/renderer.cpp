@@ -29,7 +29,8 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         primaries.emplace_back(surfaces[i], camera, scene.surfaces[i].clip, scene.width,
                                scene.height, tracers[i]);
-        shaded.push_back({&tracers[i], scene.surfaces[i].clip, scene.surfaces[i].material});
+        shaded.push_back({&tracers[i], scene.surfaces[i].clip, scene.surfaces[i].material,
+                          scene.surfaces[i].trim.get()});
     }
     const Shader shader(shaded, lights, scene.options, scale);
 
@@ -66,8 +67,11 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         if (interval.is_empty()) {
                             continue;
                         }
-                        const RootResult hit =
-                            primaries[s].first_hit(rows[s], image_x, ray, interval);
+                        const RootResult hit = first_hit_trimmed(
+                            scene.surfaces[s].trim.get(), ray, interval, kTrimTolerance * scale,
+                            surfaces[s].degree(), [&](Interval within) {
+                                return primaries[s].first_hit(rows[s], image_x, ray, within);
+                            });
                         row_work += hit.work;
                         work[column] += hit.work;
                         if (hit.status == RootStatus::unknown) {

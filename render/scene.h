@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "render/camera_path.h"
 #include "render/clip_region.h"
 #include "render/material.h"
+#include "render/patch_trim.h"
 #include "render/sdf/node.h"
 #include "render/trace_method.h"
 
@@ -38,6 +40,9 @@ struct Surface {
     // No clip region given: render/framing.h's fit_clip_regions replaces `clip` by a sphere
     // about the surface's extent when the surface is bounded.
     bool fit_clip = true;
+    // A surface that is a patch's implicit equation: only hits on the patch count
+    // (render/patch_trim.h). Shared: copies of a scene share the map.
+    std::shared_ptr<const PatchTrim> trim = nullptr;
 };
 
 struct RenderOptions {
@@ -58,7 +63,7 @@ struct Scene {
     // An animation: [camera] with `frames` and [[camera.key]] tables (camera is then its first
     // key).
     std::optional<CameraPath> camera_path;
-    std::vector<Light> lights;         // empty: default_lights()
+    std::vector<Light> lights;  // empty: default_lights()
     std::vector<Surface> surfaces;
     // The SDF scene tree ([[object]] in scene files, render/sdf/): when present, the scene is
     // rendered by render_sdf_scene, with the surfaces above as exactly traced leaves.

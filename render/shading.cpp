@@ -44,7 +44,10 @@ bool Shader::is_occluded(const Ray& ray, double t_max, int& work) const {
         if (interval.is_empty()) {
             continue;
         }
-        const RootResult hit = surface.tracer->first_hit(ray, interval);
+        const RootResult hit = first_hit_trimmed(
+            surface.trim, ray, interval, kTrimTolerance * scale_,
+            surface.tracer->polynomial().degree(),
+            [&](Interval within) { return surface.tracer->first_hit(ray, within); });
         work += hit.work;
         if (hit.status == RootStatus::hit) {
             return true;

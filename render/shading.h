@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <span>
 
+#include "render/patch_trim.h"
 #include "render/scene.h"
 #include "render/surface_tracer.h"
 
@@ -20,6 +21,7 @@ struct ShadedSurface {
     const SurfaceTracer* tracer;
     ClipRegion clip;
     Material material;
+    const PatchTrim* trim = nullptr;  // a patch's surface: shadows only from the patch
 };
 
 struct ShadingResult {

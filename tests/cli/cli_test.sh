@@ -208,6 +208,9 @@ expect "dixon honours --timeout" 3 "timeout" -- \
     "$locus" implicitize bench/data/implicit/bezier_bicubic.param --method dixon --timeout 0.2
 expect "dixon refuses curves" 2 "applies to surfaces" -- \
     "$locus" implicitize -p t --method dixon "x = t" "y = t^2"
+expect "render the teapot's 32 patches, trimmed" 0 "32 patches implicitized and verified" -- \
+    "$locus" render bench/data/implicit/teapot.bpt --method sturm --size 40x40 -o "$tmp/teapot.png"
+test -s "$tmp/teapot.png" || fail "the teapot render wrote no picture"
 expect "resultant under --timeout still answers" 0 "x^2*y^2+x^2*z^2+y^2*z^2-x*y*z" -- \
     "$locus" implicitize bench/data/implicit/steiner_roman.param --method resultant --timeout 20
 expect "trace prints hits and misses" 0 "" -- bash -c \

@@ -1,0 +1,132 @@
+#include "cli/patch_surfaces.h"
+
+#include <flint/fmpq.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include "algebra/error.h"
+#include "algebra/print.h"
+#include "cli/command_support.h"
+#include "cli/exit_codes.h"
+#include "implicit/bezier_patch.h"
+#include "implicit/implicitize.h"
+
+namespace locus::cli {
+namespace {
+
+std::vector<implicit::BezierPatch> read_patches(const std::string& path, const std::string& text) {
+    try {
+        if (path.ends_with(".bpt") || implicit::looks_like_bpt(text)) {
+            return implicit::parse_bpt(text);
+        }
+        return {implicit::parse_bezier_param(text, nullptr)};
+    } catch (const Error& e) {
+        throw failure_about(path, e);
+    }
+}
+
+// The patch's map with double coefficients, for the trim test.
+std::shared_ptr<const render::PatchTrim> trim_of(const implicit::BezierPatch& patch,
+                                                 const algebra::RingPtr& ring) {
+    auto trim = std::make_shared<render::PatchTrim>();
+    trim->domain = patch.kind == implicit::BezierPatch::Kind::triangle
+                       ? render::PatchTrim::Domain::triangle
+                       : render::PatchTrim::Domain::square;
+    const auto map = implicit::homogeneous_map(patch, ring);
+    for (std::size_t c = 0; c < 4; ++c) {
+        for (std::size_t i = 0; i < map[c].num_terms(); ++i) {
+            const auto e = map[c].exponents(i);
+            trim->map[c].push_back({fmpq_get_d(map[c].coefficient(i).get()), static_cast<int>(e[0]),
+                                    static_cast<int>(e[1])});
+        }
+    }
+    return trim;
+}
+
+// The box of the control points, widened by a millionth of its size (rounding of the decimals).
+render::ClipBox box_of(const implicit::BezierPatch& patch) {
+    render::ClipBox box{render::Vec3(INFINITY), render::Vec3(-INFINITY)};
+    for (const auto& point : patch.points) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = fmpq_get_d(point[static_cast<std::size_t>(c)].get());
+            box.min[c] = std::min(box.min[c], v);
+            box.max[c] = std::max(box.max[c], v);
+        }
+    }
+    const double margin = 1e-6 * std::max(1.0, glm::length(box.max - box.min));
+    box.min -= render::Vec3(margin);
+    box.max += render::Vec3(margin);
+    return box;
+}
+
+}  // namespace
+
+bool holds_patches(const std::string& path, const std::string& text) {
+    if (path.ends_with(".bpt") || implicit::looks_like_bpt(text)) {
+        return true;
+    }
+    for (const auto& [line, number] : algebra::split_lines(text)) {
+        const std::size_t start = line.find_first_not_of(" \t");
+        if (start != std::string_view::npos && line.substr(start).starts_with("bezier") &&
+            line.find(':') != std::string_view::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::vector<render::Surface> patch_surfaces(const std::string& path, const std::string& text,
+                                            Deadline deadline) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<implicit::BezierPatch> patches = read_patches(path, text);
+    std::vector<render::Surface> surfaces;
+    std::map<std::string, int> routes;
+    for (std::size_t k = 0; k < patches.size(); ++k) {
+        const std::string name = path + ": patch " + std::to_string(k + 1);
+        const implicit::Parametrization map = implicit::to_parametrization(patches[k]);
+        algebra::GroebnerOptions options;
+        options.deadline = deadline;
+        implicit::ImplicitResult result;
+        try {
+            result = implicit::implicitize_auto(map, options);
+        } catch (const Timeout&) {
+            throw;
+        } catch (const Error& e) {
+            throw CommandFailure(exit_input, name + ": " + e.what());
+        }
+        if (!result.equation) {
+            throw CommandFailure(exit_input, name + ": " +
+                                                 implicit::describe_image(result.image, 2, 3) +
+                                                 "; there is no surface to render");
+        }
+        if (!result.proved_on_map && !implicit::vanishes_on(*result.equation, map)) {
+            throw CommandFailure(exit_check_failed,
+                                 name +
+                                     ": verification FAILED: the implicit equation does not "
+                                     "vanish on the patch");
+        }
+        ++routes[result.method];
+        render::Surface surface;
+        surface.equation = algebra::to_string(*result.equation);
+        surface.source = name;
+        surface.clip = box_of(patches[k]);
+        surface.fit_clip = false;
+        surface.trim = trim_of(patches[k], map.parameter_ring);
+        // Which side of a patch's implicit surface is "inside" depends on the sign its equation
+        // happened to get: one colour for both sides.
+        surface.material = render::Material::plain(render::Material{}.color);
+        surfaces.push_back(std::move(surface));
+    }
+    std::string summary;
+    for (const auto& [route, count] : routes) {
+        summary += (summary.empty() ? "" : ", ") + route + " " + std::to_string(count);
+    }
+    std::fprintf(stderr, "%s: %zu patch%s implicitized and verified (%s) in %.2f s\n", path.c_str(),
+                 patches.size(), patches.size() == 1 ? "" : "es", summary.c_str(),
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return surfaces;
+}
+
+}  // namespace locus::cli

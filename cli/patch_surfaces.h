@@ -1,0 +1,26 @@
+// Bézier patches as render surfaces (`locus render teapot.bpt`, `--param` with a `bezier:`
+// file): each patch's implicit equation (implicitize --method auto, proved on the patch's map),
+// clipped to the box of its control points — a patch with positive weights lies in their
+// convex hull, so a ray solves only the patches whose boxes it meets — and trimmed to the
+// patch's domain (render/patch_trim.h), so that the sheets of the implicit surface beyond the
+// patch are not drawn.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/process_limits.h"
+#include "render/scene.h"
+
+namespace locus::cli {
+
+// Does the file hold patches (a .bpt file, or a .param file with a `bezier:` line)?
+bool holds_patches(const std::string& path, const std::string& text);
+
+// The surfaces of the patches in `text` (read from `path`); reports on standard error how many
+// were implicitized by which route. Throws CommandFailure (exit 2 for bad input, 4 when a proof
+// fails) and Timeout.
+std::vector<render::Surface> patch_surfaces(const std::string& path, const std::string& text,
+                                            Deadline deadline);
+
+}  // namespace locus::cli

@@ -1,0 +1,165 @@
+#include "render/patch_trim.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace locus::render {
+namespace {
+
+constexpr int kSamples = 9;         // domain samples per direction for the starting points
+constexpr std::size_t kStarts = 4;  // starting points, at most
+constexpr int kIterations = 40;  // Gauss–Newton steps from a start
+constexpr double kDomainSlack = 1e-7;
+
+struct MapValue {
+    Vec3 point{0.0};
+    Vec3 ds{0.0}, dt{0.0};  // partial derivatives of P/W
+};
+
+// P/W at (s, t), with its partial derivatives when `derivatives`.
+MapValue evaluate(const std::array<std::vector<BivariateTerm>, 4>& map, double s, double t,
+                  bool derivatives) {
+    // Powers of s and t (patch degrees are at most 16 in each parameter, 32 in total).
+    constexpr int kPowers = 34;
+    std::array<double, kPowers> ps{}, pt{};
+    ps[0] = pt[0] = 1.0;
+    for (int e = 1; e < kPowers; ++e) {
+        ps[e] = ps[e - 1] * s;
+        pt[e] = pt[e - 1] * t;
+    }
+    std::array<double, 4> v{}, vs{}, vt{};
+    for (std::size_t c = 0; c < 4; ++c) {
+        for (const BivariateTerm& term : map[c]) {
+            v[c] += term.coefficient * ps[term.es] * pt[term.et];
+            if (derivatives) {
+                if (term.es > 0) {
+                    vs[c] += term.coefficient * term.es * ps[term.es - 1] * pt[term.et];
+                }
+                if (term.et > 0) {
+                    vt[c] += term.coefficient * term.et * ps[term.es] * pt[term.et - 1];
+                }
+            }
+        }
+    }
+    MapValue r;
+    const double w = v[3];
+    r.point = Vec3(v[0], v[1], v[2]) / w;
+    if (derivatives) {
+        // d(P/W) = (dP·W − P·dW) / W²
+        r.ds = (Vec3(vs[0], vs[1], vs[2]) * w - Vec3(v[0], v[1], v[2]) * vs[3]) / (w * w);
+        r.dt = (Vec3(vt[0], vt[1], vt[2]) * w - Vec3(v[0], v[1], v[2]) * vt[3]) / (w * w);
+    }
+    return r;
+}
+
+bool in_domain(PatchTrim::Domain domain, double s, double t) {
+    const bool in_square = s >= -kDomainSlack && t >= -kDomainSlack;
+    return domain == PatchTrim::Domain::square
+               ? in_square && s <= 1.0 + kDomainSlack && t <= 1.0 + kDomainSlack
+               : in_square && s + t <= 1.0 + kDomainSlack;
+}
+
+struct Preimage {
+    double s = 0.0, t = 0.0, distance = std::numeric_limits<double>::infinity();
+};
+
+// Gauss–Newton on |P(s,t)/W − p|² from (s, t), with a Levenberg term for rank-deficient
+// Jacobians (a collapsed edge).
+Preimage refine(const std::array<std::vector<BivariateTerm>, 4>& map, const Vec3& p, double s,
+                double t) {
+    Preimage best;
+    for (int i = 0; i < kIterations; ++i) {
+        const MapValue m = evaluate(map, s, t, true);
+        const Vec3 r = m.point - p;
+        const double distance = glm::length(r);
+        if (!(distance < best.distance)) {
+            if (!std::isfinite(distance)) {
+                break;
+            }
+        } else {
+            best = {s, t, distance};
+        }
+        const double a = glm::dot(m.ds, m.ds), b = glm::dot(m.ds, m.dt), c = glm::dot(m.dt, m.dt);
+        const double gs = glm::dot(m.ds, r), gt = glm::dot(m.dt, r);
+        const double damping = 1e-12 * (a + c) + 1e-300;
+        const double det = (a + damping) * (c + damping) - b * b;
+        if (!(det > 0.0)) {
+            break;
+        }
+        const double step_s = -((c + damping) * gs - b * gt) / det;
+        const double step_t = -((a + damping) * gt - b * gs) / det;
+        s += step_s;
+        t += step_t;
+        if (std::abs(step_s) + std::abs(step_t) < 1e-15) {
+            break;
+        }
+    }
+    return best;
+}
+
+// Starting points: the domain samples closest to p, at least two sample steps apart, so that
+// every fold of a patch that passes near p gets a start of its own.
+std::vector<Preimage> starting_points(const PatchTrim& trim, const Vec3& p) {
+    std::vector<Preimage> samples;
+    for (int i = 0; i < kSamples; ++i) {
+        for (int j = 0; j < kSamples; ++j) {
+            const double s = i / (kSamples - 1.0), t = j / (kSamples - 1.0);
+            if (trim.domain == PatchTrim::Domain::triangle && s + t > 1.0 + 1e-12) {
+                continue;
+            }
+            samples.push_back({s, t, glm::length(evaluate(trim.map, s, t, false).point - p)});
+        }
+    }
+    std::sort(samples.begin(), samples.end(),
+              [](const Preimage& a, const Preimage& b) { return a.distance < b.distance; });
+    std::vector<Preimage> starts;
+    const double separation = 2.0 / (kSamples - 1.0) - 1e-12;
+    for (const Preimage& sample : samples) {
+        if (starts.size() == kStarts) {
+            break;
+        }
+        bool apart = std::isfinite(sample.distance);
+        for (const Preimage& start : starts) {
+            apart = apart && std::max(std::abs(start.s - sample.s), std::abs(start.t - sample.t)) >=
+                                 separation;
+        }
+        if (apart) {
+            starts.push_back(sample);
+        }
+    }
+    return starts;
+}
+
+// The preimage in the domain closest to p among those refined from the starting points, or the
+// closest outside it when none is inside; `good_enough` stops the search early.
+Preimage find_preimage(const PatchTrim& trim, const Vec3& p, double good_enough) {
+    Preimage inside, outside;
+    for (const Preimage& start : starting_points(trim, p)) {
+        const Preimage found = refine(trim.map, p, start.s, start.t);
+        Preimage& slot = in_domain(trim.domain, found.s, found.t) ? inside : outside;
+        if (found.distance < slot.distance) {
+            slot = found;
+        }
+        if (inside.distance <= good_enough) {
+            break;
+        }
+    }
+    return std::isfinite(inside.distance) ? inside : outside;
+}
+
+}  // namespace
+
+bool PatchTrim::contains(const Vec3& p, double tolerance) const {
+    const Preimage found = find_preimage(*this, p, tolerance);
+    return found.distance <= tolerance && in_domain(domain, found.s, found.t);
+}
+
+std::array<double, 2> PatchTrim::preimage(const Vec3& p) const {
+    const Preimage found = find_preimage(*this, p, 0.0);
+    return {found.s, found.t};
+}
+
+Vec3 PatchTrim::at(double s, double t) const { return evaluate(map, s, t, false).point; }
+
+}  // namespace locus::render

@@ -1,0 +1,161 @@
+// Trimmed rendering of Bézier patches, checked against a renderer that shares no code with it:
+// a fine tessellation of the parametrization, intersected ray by ray (Möller–Trumbore), with the
+// same camera. The silhouettes must agree to within 0.5 % of the pixels and the depths to within
+// the tessellation's own error. Also: the trim test accepts points of the patch and refuses
+// points of the implicit surface beyond the patch's edges.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "algebra/compiled.h"
+#include "cli/patch_surfaces.h"
+#include "render/camera.h"
+#include "render/patch_trim.h"
+#include "render/renderer.h"
+
+namespace locus::render {
+namespace {
+
+TEST(PatchTrim, PointsBeyondTheEdgesOfTheDomainAreRefused) {
+    // The bilinear patch x = s, y = t, z = s·t on [0, 1]², whose surface is z = x·y.
+    const auto surfaces =
+        cli::patch_surfaces("bilinear.bpt", "1\n1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n", std::nullopt);
+    ASSERT_EQ(surfaces.size(), 1u);
+    EXPECT_EQ(surfaces[0].equation, "x*y-z");
+    const PatchTrim& trim = *surfaces[0].trim;
+    EXPECT_TRUE(trim.contains({0.5, 0.25, 0.125}, 1e-9));
+    EXPECT_TRUE(trim.contains({1.0, 1.0, 1.0}, 1e-9));    // a corner
+    EXPECT_FALSE(trim.contains({1.5, 0.5, 0.75}, 1e-9));  // on z = x·y, beyond s = 1
+    EXPECT_FALSE(trim.contains({-0.2, -0.3, 0.06}, 1e-9));
+    EXPECT_FALSE(trim.contains({0.5, 0.5, 0.3}, 1e-9));  // off the surface
+    const auto st = trim.preimage({0.3, 0.7, 0.21});
+    EXPECT_NEAR(st[0], 0.3, 1e-12);
+    EXPECT_NEAR(st[1], 0.7, 1e-12);
+    // A triangle: the plane x + y + z = 1 only where x, y, z ≥ 0.
+    const auto plane = cli::patch_surfaces(
+        "plane.param", "bezier: triangle 1\n1 0 0\n0 1 0\n0 0 1\n", std::nullopt);
+    EXPECT_TRUE(plane[0].trim->contains({0.2, 0.3, 0.5}, 1e-9));
+    EXPECT_FALSE(plane[0].trim->contains({0.7, 0.7, -0.4}, 1e-9));
+}
+
+// Hit mask and depth of a tessellated patch for every pixel.
+struct TessellatedView {
+    std::vector<double> depth;  // +inf on a miss
+    double error = 0.0;         // largest distance of the patch from its triangles (sampled)
+};
+
+TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera, int width,
+                                     int height, int cells) {
+    std::vector<Vec3> grid;
+    for (int i = 0; i <= cells; ++i) {
+        for (int j = 0; j <= cells; ++j) {
+            grid.push_back(trim.at(static_cast<double>(i) / cells, static_cast<double>(j) / cells));
+        }
+    }
+    auto vertex = [&](int i, int j) { return grid[static_cast<std::size_t>(i * (cells + 1) + j)]; };
+    std::vector<std::array<Vec3, 3>> triangles;
+    TessellatedView view;
+    for (int i = 0; i < cells; ++i) {
+        for (int j = 0; j < cells; ++j) {
+            const Vec3 a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1),
+                       d = vertex(i, j + 1);
+            triangles.push_back({a, b, c});
+            triangles.push_back({a, c, d});
+            // The patch at the cell's centre against the triangles' shared edge midpoint.
+            const Vec3 mid = trim.at((i + 0.5) / cells, (j + 0.5) / cells);
+            view.error = std::max(view.error, glm::length(mid - 0.5 * (a + c)));
+        }
+    }
+    view.depth.assign(static_cast<std::size_t>(width) * height, INFINITY);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const Ray ray = camera.ray(x + 0.5, y + 0.5);
+            double best = INFINITY;
+            for (const auto& [p0, p1, p2] : triangles) {
+                // Möller–Trumbore.
+                const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+                const Vec3 h = glm::cross(ray.direction, e2);
+                const double det = glm::dot(e1, h);
+                if (std::abs(det) < 1e-300) {
+                    continue;
+                }
+                const Vec3 s = ray.origin - p0;
+                const double u = glm::dot(s, h) / det;
+                const Vec3 q = glm::cross(s, e1);
+                const double v = glm::dot(ray.direction, q) / det;
+                const double t = glm::dot(e2, q) / det;
+                if (u >= 0 && v >= 0 && u + v <= 1 && t > 0 && t < best) {
+                    best = t;
+                }
+            }
+            view.depth[static_cast<std::size_t>(y) * width + x] = best * glm::length(ray.direction);
+        }
+    }
+    return view;
+}
+
+void expect_trimmed_render_matches_tessellation(const std::string& name, const std::string& text,
+                                                const CameraSpec& spec) {
+    SCOPED_TRACE(name);
+    Scene scene;
+    scene.surfaces = cli::patch_surfaces(name, text, std::nullopt);
+    scene.width = scene.height = 64;
+    scene.camera = spec;
+    scene.options.shadows = false;
+    std::vector<algebra::CompiledPolynomial> compiled;
+    for (const auto& surface : scene.surfaces) {
+        compiled.push_back(algebra::compile_surface(surface.equation));
+    }
+    ExecutionSettings execution;
+    execution.threads = 2;
+    RenderStats stats;
+    const RenderedImage image = render(scene, compiled, execution, &stats);
+    EXPECT_EQ(stats.unknown, 0);
+    const Camera camera(spec, scene.width, scene.height);
+    const std::size_t pixels = image.depth.size();
+    std::vector<double> reference(pixels, INFINITY);
+    double error = 0.0;
+    for (const auto& surface : scene.surfaces) {
+        const TessellatedView view =
+            tessellate_and_trace(*surface.trim, camera, scene.width, scene.height, 48);
+        error = std::max(error, view.error);
+        for (std::size_t i = 0; i < pixels; ++i) {
+            reference[i] = std::min(reference[i], view.depth[i]);
+        }
+    }
+    std::size_t silhouette_differs = 0, both = 0, depth_differs = 0, hits = 0;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const bool a = std::isfinite(image.depth[i]), b = std::isfinite(reference[i]);
+        hits += b;
+        if (a != b) {
+            ++silhouette_differs;
+        } else if (a) {
+            ++both;
+            // Up to the tessellation error along a ray at up to 75° from the surface normal.
+            depth_differs += std::abs(image.depth[i] - reference[i]) > 4.0 * error + 1e-9;
+        }
+    }
+    EXPECT_GT(hits, pixels / 20);  // the patch is in the picture
+    EXPECT_LE(silhouette_differs, pixels / 200) << "of " << pixels << " pixels";
+    EXPECT_LE(depth_differs, both / 100) << "of " << both << " pixels hit by both; error " << error;
+}
+
+TEST(PatchRender, TrimmedPatchesMatchTheirTessellation) {
+    // A biquadratic patch whose implicit quartic-by-quartic surface has sheets beyond its edges,
+    // a rational one, and one with a collapsed edge (its Dixon matrix is singular).
+    const CameraSpec camera{{4.0, 3.0, 6.0}, {0.5, 0.5, 1.0}, {0.0, 0.0, 1.0}, 40.0};
+    expect_trimmed_render_matches_tessellation(
+        "biquadratic.param",
+        "bezier: 2 2\n0 0 0\n1 0 1\n2 0 0\n0 1 1\n1 1 3\n2 1 1\n0 2 0\n1 2 1\n2 2 0\n",
+        {{5.0, -3.0, 4.0}, {1.0, 1.0, 0.8}, {0.0, 0.0, 1.0}, 40.0});
+    expect_trimmed_render_matches_tessellation(
+        "rational.param",
+        "bezier: 2 2\n1 0 0\n1 1 0 2\n0 1 1\n2 0 1 3\n1 2 1 1\n-1 1 2\n0 0 2\n1 -1 3 2\n2 1 1\n",
+        camera);
+    expect_trimmed_render_matches_tessellation(
+        "collapsed.param",
+        "bezier: 2 2\n0 0 3\n0 0 3\n0 0 3\n2 0 1\n1 2 1\n-1 1 2\n0 1 0\n1 -1 3\n2 2 1\n", camera);
+}
+
+}  // namespace
+}  // namespace locus::render
