@@ -2,7 +2,9 @@
 
 #include <flint/fmpq.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -33,7 +35,7 @@ std::shared_ptr<const render::PatchTrim> trim_of(const implicit::BezierPatch& pa
     auto trim = std::make_shared<render::PatchTrim>();
     trim->domain = patch.kind == implicit::BezierPatch::Kind::triangle
                        ? render::PatchTrim::Domain::triangle
-                       : render::PatchTrim::Domain::square;
+                       : render::PatchTrim::Domain::box;
     const auto map = implicit::homogeneous_map(patch, ring);
     for (std::size_t c = 0; c < 4; ++c) {
         for (std::size_t i = 0; i < map[c].num_terms(); ++i) {
@@ -61,7 +63,77 @@ render::ClipBox box_of(const implicit::BezierPatch& patch) {
     return box;
 }
 
+void append_terms(const algebra::Polynomial& f, std::vector<render::BivariateTerm>& terms) {
+    for (std::size_t i = 0; i < f.num_terms(); ++i) {
+        const auto e = f.exponents(i);
+        terms.push_back(
+            {fmpq_get_d(f.coefficient(i).get()), static_cast<int>(e[0]), static_cast<int>(e[1])});
+    }
+}
+
 }  // namespace
+
+void trim_to_domain(const std::string& path, const std::string& text, render::Surface& surface) {
+    implicit::Parametrization map;
+    try {
+        map = implicit::parse_parametrization(text);
+    } catch (const Error& e) {
+        throw failure_about(path, e);
+    }
+    if (map.domain.empty() || map.parameter_ring->num_vars() != 2) {
+        return;
+    }
+    // Over the product of the distinct denominators.
+    const auto& ring = map.parameter_ring;
+    std::vector<algebra::Polynomial> distinct;
+    for (const auto& c : map.components) {
+        if (std::find(distinct.begin(), distinct.end(), c.denominator()) == distinct.end()) {
+            distinct.push_back(c.denominator());
+        }
+    }
+    auto trim = std::make_shared<render::PatchTrim>();
+    algebra::Polynomial common = algebra::Polynomial::constant(ring, algebra::Rational(1));
+    for (const auto& d : distinct) {
+        common *= d;
+    }
+    for (std::size_t i = 0; i < 3 && i < map.components.size(); ++i) {
+        algebra::Polynomial numerator = map.components[i].numerator();
+        for (const auto& d : distinct) {
+            if (!(d == map.components[i].denominator())) {
+                numerator *= d;
+            }
+        }
+        append_terms(numerator, trim->map[i]);
+    }
+    append_terms(common, trim->map[3]);
+    trim->s0 = fmpq_get_d(map.domain[0].first.get());
+    trim->s1 = fmpq_get_d(map.domain[0].second.get());
+    trim->t0 = fmpq_get_d(map.domain[1].first.get());
+    trim->t1 = fmpq_get_d(map.domain[1].second.get());
+    // The clip box: the image of a 65 × 65 grid of the domain, widened by 5 % of its diagonal
+    // on every side (sampled, not proved: a patch that bulges further between samples is cut).
+    render::ClipBox box{render::Vec3(INFINITY), render::Vec3(-INFINITY)};
+    constexpr int kGrid = 64;
+    for (int i = 0; i <= kGrid; ++i) {
+        for (int j = 0; j <= kGrid; ++j) {
+            const render::Vec3 p = trim->at(trim->s0 + (trim->s1 - trim->s0) * i / kGrid,
+                                            trim->t0 + (trim->t1 - trim->t0) * j / kGrid);
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
+                box.min = glm::min(box.min, p);
+                box.max = glm::max(box.max, p);
+            }
+        }
+    }
+    if (!(box.min.x <= box.max.x)) {
+        throw CommandFailure(exit_input, path + ": the domain's image has no finite point");
+    }
+    const double margin = 0.05 * std::max(1e-9, glm::length(box.max - box.min));
+    box.min -= render::Vec3(margin);
+    box.max += render::Vec3(margin);
+    surface.clip = box;
+    surface.fit_clip = false;
+    surface.trim = std::move(trim);
+}
 
 bool holds_patches(const std::string& path, const std::string& text) {
     if (path.ends_with(".bpt") || implicit::looks_like_bpt(text)) {

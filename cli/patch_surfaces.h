@@ -23,4 +23,9 @@ bool holds_patches(const std::string& path, const std::string& text);
 std::vector<render::Surface> patch_surfaces(const std::string& path, const std::string& text,
                                             Deadline deadline);
 
+// For a parametrization file with a `domain:` line: `surface` (which renders the file's implicit
+// equation) is trimmed to the image of that box and clipped to a box about it. Nothing changes
+// without a domain.
+void trim_to_domain(const std::string& path, const std::string& text, render::Surface& surface);
+
 }  // namespace locus::cli

@@ -170,6 +170,7 @@ render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
             surface.source = "equation";
         } else {
             surface.param_file = args.param;
+            trim_to_domain(args.param, read_input(args.param), surface);
         }
         scene.surfaces.push_back(surface);
     }

@@ -17,6 +17,107 @@ std::size_t first_non_space(std::string_view s, std::size_t from = 0) {
     return from;
 }
 
+// `u in [a, b], v in [c, d]`: one interval per parameter, exact bounds a < b.
+std::vector<std::pair<algebra::Rational, algebra::Rational>> parse_domain(
+    std::string_view text, std::size_t line, std::size_t first_column, const Parametrization& map) {
+    const std::size_t k = map.parameter_ring->num_vars();
+    std::vector<std::pair<algebra::Rational, algebra::Rational>> domain(k);
+    std::vector<bool> given(k, false);
+    std::size_t i = 0;
+    auto column = [&] { return first_column + i; };
+    auto skip_spaces = [&] {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) {
+            ++i;
+        }
+    };
+    auto found = [&] {
+        return i < text.size() ? "'" + std::string(text.substr(i, 12)) + "'"
+                               : std::string("the end of the line");
+    };
+    auto expect_char = [&](char c, const char* what) {
+        skip_spaces();
+        if (i >= text.size() || text[i] != c) {
+            throw ParseError(line, column(), what, found());
+        }
+        ++i;
+    };
+    auto number = [&] {
+        skip_spaces();
+        const std::size_t begin = i;
+        while (i < text.size() &&
+               (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '.' ||
+                text[i] == '/' || text[i] == '-' || text[i] == '+')) {
+            ++i;
+        }
+        std::string_view literal = text.substr(begin, i - begin);
+        const bool negative = literal.starts_with('-');
+        if (negative || literal.starts_with('+')) {
+            literal.remove_prefix(1);
+        }
+        algebra::Rational value;
+        if (!algebra::Rational::from_literal(literal, value)) {
+            i = begin;
+            throw ParseError(line, column(), "a bound such as -2, 1.5 or 3/4", found());
+        }
+        return negative ? -value : value;
+    };
+    while (true) {
+        skip_spaces();
+        const std::size_t begin = i;
+        while (i < text.size() &&
+               (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) {
+            ++i;
+        }
+        const std::string name(text.substr(begin, i - begin));
+        const auto v = map.parameter_ring->variable_index(name);
+        if (!v) {
+            i = begin;
+            throw ParseError(line, column(), "a parameter name", found());
+        }
+        if (given[*v]) {
+            i = begin;
+            throw ParseError(line, column(), "each parameter once", "'" + name + "' again");
+        }
+        if (std::find(map.half_angle.begin(), map.half_angle.end(), *v) != map.half_angle.end()) {
+            i = begin;
+            throw ParseError(line, column(),
+                             "a parameter outside sin and cos (an angle's range is the circle)",
+                             "'" + name + "'");
+        }
+        skip_spaces();
+        if (text.substr(i, 2) != "in") {
+            throw ParseError(line, column(), "'in'", found());
+        }
+        i += 2;
+        expect_char('[', "'['");
+        const algebra::Rational lo = number();
+        expect_char(',', "','");
+        const std::size_t hi_column = column();
+        const algebra::Rational hi = number();
+        if (!(lo < hi)) {
+            throw ParseError(line, hi_column + 1, "an upper bound above the lower one",
+                             hi.to_string());
+        }
+        expect_char(']', "']'");
+        domain[*v] = {lo, hi};
+        given[*v] = true;
+        skip_spaces();
+        if (i >= text.size()) {
+            break;
+        }
+        expect_char(',', "',' or the end of the line");
+    }
+    for (std::size_t v = 0; v < k; ++v) {
+        if (!given[v]) {
+            throw ParseError(
+                line, column(),
+                "an interval for every parameter (" + map.parameter_ring->variable_name(v) + ")",
+                "the end of the line");
+        }
+    }
+    return domain;
+}
+
 }  // namespace
 
 Parametrization parse_parametrization(std::string_view text) {
@@ -42,6 +143,8 @@ Parametrization parse_parametrization(std::string_view text) {
     };
     std::vector<Assignment> assignments(3, Assignment{{}, 0, 0});
     bool have_params = false;
+    std::string_view domain_text;  // after 'domain:', read once the parameters are known
+    std::size_t domain_line = 0, domain_column = 0;
     const std::vector<algebra::SourceLine> lines = algebra::split_lines(text);
     const std::size_t last_line = lines.back().number;
     for (const auto& [raw, line] : lines) {
@@ -54,6 +157,15 @@ Parametrization parse_parametrization(std::string_view text) {
                 std::string key(raw.substr(start, colon - start));
                 while (!key.empty() && std::isspace(static_cast<unsigned char>(key.back()))) {
                     key.pop_back();
+                }
+                if (key == "domain") {
+                    if (domain_line != 0) {
+                        throw ParseError(line, start + 1, "one 'domain:' line", "'domain:'");
+                    }
+                    domain_text = raw.substr(colon + 1);
+                    domain_line = line;
+                    domain_column = colon + 2;
+                    continue;
                 }
                 if (key != "params" || have_params) {
                     throw ParseError(line, start + 1,
@@ -184,6 +296,9 @@ Parametrization parse_parametrization(std::string_view text) {
             const auto c = algebra::Polynomial::variable(result.circle_ring, circle.cos_of[v]);
             result.circle_relations.push_back(s * s + c * c - one);
         }
+    }
+    if (domain_line != 0) {
+        result.domain = parse_domain(domain_text, domain_line, domain_column, result);
     }
     return result;
 }

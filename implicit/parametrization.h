@@ -5,6 +5,7 @@
 //     y = s
 //     z = t^2
 // Curves use one parameter and x, y (plane) or x, y, z (space); surfaces use two parameters.
+// An optional line `domain: s in [0, 1], t in [-2, 2]` bounds the parameters for rendering.
 #pragma once
 
 #include <string>
@@ -28,6 +29,10 @@ struct Parametrization {
     algebra::RingPtr circle_ring;
     std::vector<algebra::RationalFunction> circle_components;
     std::vector<algebra::Polynomial> circle_relations;
+    // `domain: u in [a, b], v in [c, d]`: the box of parameters the user means, one interval
+    // per parameter (empty: all of them). Only rendering uses it (the trimmed surface); the
+    // implicit equation is that of the whole image. Angles (inside sin/cos) take no interval.
+    std::vector<std::pair<algebra::Rational, algebra::Rational>> domain;
 };
 
 // Reads a parametrization file. Errors are ParseErrors with line and column: a missing

@@ -9,7 +9,7 @@ namespace {
 
 constexpr int kSamples = 9;         // domain samples per direction for the starting points
 constexpr std::size_t kStarts = 4;  // starting points, at most
-constexpr int kIterations = 40;  // Gauss–Newton steps from a start
+constexpr int kIterations = 40;     // Gauss–Newton steps from a start
 constexpr double kDomainSlack = 1e-7;
 
 struct MapValue {
@@ -53,11 +53,12 @@ MapValue evaluate(const std::array<std::vector<BivariateTerm>, 4>& map, double s
     return r;
 }
 
-bool in_domain(PatchTrim::Domain domain, double s, double t) {
-    const bool in_square = s >= -kDomainSlack && t >= -kDomainSlack;
-    return domain == PatchTrim::Domain::square
-               ? in_square && s <= 1.0 + kDomainSlack && t <= 1.0 + kDomainSlack
-               : in_square && s + t <= 1.0 + kDomainSlack;
+bool in_domain(const PatchTrim& trim, double s, double t) {
+    if (trim.domain == PatchTrim::Domain::triangle) {
+        return s >= -kDomainSlack && t >= -kDomainSlack && s + t <= 1.0 + kDomainSlack;
+    }
+    const double ds = kDomainSlack * (trim.s1 - trim.s0), dt = kDomainSlack * (trim.t1 - trim.t0);
+    return s >= trim.s0 - ds && s <= trim.s1 + ds && t >= trim.t0 - dt && t <= trim.t1 + dt;
 }
 
 struct Preimage {
@@ -104,11 +105,14 @@ std::vector<Preimage> starting_points(const PatchTrim& trim, const Vec3& p) {
     std::vector<Preimage> samples;
     for (int i = 0; i < kSamples; ++i) {
         for (int j = 0; j < kSamples; ++j) {
-            const double s = i / (kSamples - 1.0), t = j / (kSamples - 1.0);
-            if (trim.domain == PatchTrim::Domain::triangle && s + t > 1.0 + 1e-12) {
+            const double u = i / (kSamples - 1.0), v = j / (kSamples - 1.0);
+            if (trim.domain == PatchTrim::Domain::triangle && u + v > 1.0 + 1e-12) {
                 continue;
             }
-            samples.push_back({s, t, glm::length(evaluate(trim.map, s, t, false).point - p)});
+            const double s = trim.s0 + u * (trim.s1 - trim.s0),
+                         t = trim.t0 + v * (trim.t1 - trim.t0);
+            const double d = glm::length(evaluate(trim.map, s, t, false).point - p);
+            samples.push_back({s, t, std::isnan(d) ? INFINITY : d});
         }
     }
     std::sort(samples.begin(), samples.end(),
@@ -121,8 +125,9 @@ std::vector<Preimage> starting_points(const PatchTrim& trim, const Vec3& p) {
         }
         bool apart = std::isfinite(sample.distance);
         for (const Preimage& start : starts) {
-            apart = apart && std::max(std::abs(start.s - sample.s), std::abs(start.t - sample.t)) >=
-                                 separation;
+            apart =
+                apart && std::max(std::abs(start.s - sample.s) / (trim.s1 - trim.s0),
+                                  std::abs(start.t - sample.t) / (trim.t1 - trim.t0)) >= separation;
         }
         if (apart) {
             starts.push_back(sample);
@@ -137,7 +142,7 @@ Preimage find_preimage(const PatchTrim& trim, const Vec3& p, double good_enough)
     Preimage inside, outside;
     for (const Preimage& start : starting_points(trim, p)) {
         const Preimage found = refine(trim.map, p, start.s, start.t);
-        Preimage& slot = in_domain(trim.domain, found.s, found.t) ? inside : outside;
+        Preimage& slot = in_domain(trim, found.s, found.t) ? inside : outside;
         if (found.distance < slot.distance) {
             slot = found;
         }
@@ -152,7 +157,7 @@ Preimage find_preimage(const PatchTrim& trim, const Vec3& p, double good_enough)
 
 bool PatchTrim::contains(const Vec3& p, double tolerance) const {
     const Preimage found = find_preimage(*this, p, tolerance);
-    return found.distance <= tolerance && in_domain(domain, found.s, found.t);
+    return found.distance <= tolerance && in_domain(*this, found.s, found.t);
 }
 
 std::array<double, 2> PatchTrim::preimage(const Vec3& p) const {
@@ -160,6 +165,8 @@ std::array<double, 2> PatchTrim::preimage(const Vec3& p) const {
     return {found.s, found.t};
 }
 
-Vec3 PatchTrim::at(double s, double t) const { return evaluate(map, s, t, false).point; }
+Vec3 PatchTrim::at(double s, double t) const {
+    return evaluate(map, s, t, false).point;
+}
 
 }  // namespace locus::render

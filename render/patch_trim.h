@@ -1,14 +1,15 @@
 // Trimming an implicit surface to the parametric patch it came from. A Bézier patch's implicit
 // equation describes the whole algebraic surface — sheets beyond the patch's edges, and for a
 // degenerate map further pieces — while CAD means only the image of the parameter domain (the
-// unit square, or the triangle s, t ≥ 0, s + t ≤ 1). A hit of the implicit surface counts only
+// unit square, or the triangle s, t ≥ 0, s + t ≤ 1; for a parametrization, the box of its
+// `domain:` line). A hit of the implicit surface counts only
 // when some preimage of the hit point lies in the domain; otherwise the ray goes on to the next
 // root (first_hit_trimmed).
 //
 // The preimage is found numerically: the closest of a grid of domain samples starts
 // Gauss–Newton iterations on |P(s,t)/W(s,t) − p|², and the hit is on the patch when the
-// residual is below a distance tolerance and (s, t) lies in the domain up to 1e-7. This is a
-// floating-point decision, not a certified one: a hit within the tolerance of the patch's edge
+// residual is below a distance tolerance and (s, t) lies in the domain up to 1e-7 of its size. This
+// is a floating-point decision, not a certified one: a hit within the tolerance of the patch's edge
 // may go either way.
 #pragma once
 
@@ -31,10 +32,13 @@ struct BivariateTerm {
 };
 
 struct PatchTrim {
-    enum class Domain { square, triangle };
+    enum class Domain { box, triangle };
     // X, Y, Z and the common denominator W (the constant 1 for polynomial patches).
     std::array<std::vector<BivariateTerm>, 4> map;
-    Domain domain = Domain::square;
+    // The box [s0, s1] × [t0, t1] (the unit square for tensor-product patches, the user's
+    // `domain:` for .param files), or the triangle s, t ≥ 0, s + t ≤ 1.
+    Domain domain = Domain::box;
+    double s0 = 0.0, s1 = 1.0, t0 = 0.0, t1 = 1.0;
 
     // Is p the image of a point of the domain, within `tolerance` (a distance)?
     bool contains(const Vec3& p, double tolerance) const;

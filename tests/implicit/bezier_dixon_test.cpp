@@ -118,6 +118,50 @@ TEST(BezierPatch, MalformedFilesAreRefusedAtTheirLineAndColumn) {
                  ParseError);
 }
 
+std::string refusal_param(const char* text) {
+    try {
+        parse_parametrization(text);
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(ParamDomain, ADomainLineBoundsEveryParameterExactly) {
+    const Parametrization map = parse_parametrization(
+        "params: u,v\ndomain: v in [0, 1/3], u in [-2.5, 2]\nx = u\ny = v\nz = u*v\n");
+    ASSERT_EQ(map.domain.size(), 2u);
+    EXPECT_EQ(map.domain[0].first, Rational(-5, 2));
+    EXPECT_EQ(map.domain[1].second, Rational(1, 3));
+    const char* head = "params: u,v\n";
+    const std::string tail = "x = u\ny = v\nz = u*v\n";
+    auto with = [&](const std::string& line) {
+        return refusal_param((head + line + "\n" + tail).c_str());
+    };
+    EXPECT_NE(with("domain: u in [0, 1]")
+                  .find("line 2, column 20: expected an interval for "
+                        "every parameter (v)"),
+              std::string::npos);
+    EXPECT_NE(with("domain: u in [1, 1], v in [0, 1]").find("an upper bound above the lower one"),
+              std::string::npos);
+    EXPECT_NE(with("domain: w in [0, 1], v in [0, 1]")
+                  .find("line 2, column 9: expected a "
+                        "parameter name"),
+              std::string::npos);
+    EXPECT_NE(with("domain: u in [0, 1], u in [0, 1]").find("each parameter once"),
+              std::string::npos);
+    EXPECT_NE(with("domain: u in [0 1], v in [0, 1]").find("line 2, column 17: expected ','"),
+              std::string::npos);
+    EXPECT_NE(with("domain: u in [a, 1], v in [0, 1]").find("a bound such as"), std::string::npos);
+    EXPECT_NE(refusal_param("params: u,v\ndomain: u in [0, 1], v in [0, 1]\n"
+                            "x = cos(u)\ny = sin(u)\nz = v\n")
+                  .find("a parameter outside sin and cos"),
+              std::string::npos);
+    EXPECT_NE(refusal_param("params: u\ndomain: u in [0, 1]\ndomain: u in [0, 1]\nx = u\ny = u^2\n")
+                  .find("line 3, column 1: expected one 'domain:' line"),
+              std::string::npos);
+}
+
 TEST(Dixon, AgreesWithInterpolationOnTheBiquadraticPatch) {
     const Parametrization map = parse_parametrization(
         test::read_text(test::source_dir() + "/tests/data/biquadratic_patch.param"));

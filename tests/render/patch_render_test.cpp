@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "algebra/compiled.h"
+#include "algebra/print.h"
 #include "cli/patch_surfaces.h"
+#include "implicit/implicitize.h"
 #include "render/camera.h"
 #include "render/patch_trim.h"
 #include "render/renderer.h"
@@ -52,7 +54,8 @@ TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera
     std::vector<Vec3> grid;
     for (int i = 0; i <= cells; ++i) {
         for (int j = 0; j <= cells; ++j) {
-            grid.push_back(trim.at(static_cast<double>(i) / cells, static_cast<double>(j) / cells));
+            grid.push_back(trim.at(trim.s0 + (trim.s1 - trim.s0) * i / cells,
+                                   trim.t0 + (trim.t1 - trim.t0) * j / cells));
         }
     }
     auto vertex = [&](int i, int j) { return grid[static_cast<std::size_t>(i * (cells + 1) + j)]; };
@@ -65,7 +68,8 @@ TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera
             triangles.push_back({a, b, c});
             triangles.push_back({a, c, d});
             // The patch at the cell's centre against the triangles' shared edge midpoint.
-            const Vec3 mid = trim.at((i + 0.5) / cells, (j + 0.5) / cells);
+            const Vec3 mid = trim.at(trim.s0 + (trim.s1 - trim.s0) * (i + 0.5) / cells,
+                                     trim.t0 + (trim.t1 - trim.t0) * (j + 0.5) / cells);
             view.error = std::max(view.error, glm::length(mid - 0.5 * (a + c)));
         }
     }
@@ -97,11 +101,11 @@ TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera
     return view;
 }
 
-void expect_trimmed_render_matches_tessellation(const std::string& name, const std::string& text,
-                                                const CameraSpec& spec) {
+void expect_surfaces_match_tessellation(const std::string& name, std::vector<Surface> surfaces,
+                                        const CameraSpec& spec) {
     SCOPED_TRACE(name);
     Scene scene;
-    scene.surfaces = cli::patch_surfaces(name, text, std::nullopt);
+    scene.surfaces = std::move(surfaces);
     scene.width = scene.height = 64;
     scene.camera = spec;
     scene.options.shadows = false;
@@ -143,6 +147,11 @@ void expect_trimmed_render_matches_tessellation(const std::string& name, const s
     EXPECT_LE(depth_differs, both / 100) << "of " << both << " pixels hit by both; error " << error;
 }
 
+void expect_trimmed_render_matches_tessellation(const std::string& name, const std::string& text,
+                                                const CameraSpec& spec) {
+    expect_surfaces_match_tessellation(name, cli::patch_surfaces(name, text, std::nullopt), spec);
+}
+
 TEST(PatchRender, TrimmedPatchesMatchTheirTessellation) {
     // A biquadratic patch whose implicit quartic-by-quartic surface has sheets beyond its edges,
     // a rational one, and one with a collapsed edge (its Dixon matrix is singular).
@@ -158,6 +167,25 @@ TEST(PatchRender, TrimmedPatchesMatchTheirTessellation) {
     expect_trimmed_render_matches_tessellation(
         "collapsed.param",
         "bezier: 2 2\n0 0 3\n0 0 3\n0 0 3\n2 0 1\n1 2 1\n-1 1 2\n0 1 0\n1 -1 3\n2 2 1\n", camera);
+}
+
+TEST(PatchRender, AParametrizationTrimmedToItsDomainMatchesItsTessellation) {
+    // Enneper's surface for |u|, |v| ≤ 2: its degree-9 equation describes the whole surface.
+    const std::string text =
+        "params: u,v\ndomain: u in [-2, 2], v in [-2, 2]\nx = u - u^3/3 + u*v^2\n"
+        "y = v - v^3/3 + v*u^2\nz = u^2 - v^2\n";
+    const implicit::Parametrization map = implicit::parse_parametrization(text);
+    const implicit::ImplicitResult r = implicit::implicitize_auto(map);
+    ASSERT_TRUE(r.equation);
+    Surface surface;
+    surface.equation = algebra::to_string(*r.equation);
+    cli::trim_to_domain("enneper.param", text, surface);
+    ASSERT_TRUE(surface.trim);
+    EXPECT_EQ(surface.trim->s0, -2.0);
+    EXPECT_EQ(surface.trim->t1, 2.0);
+    // The tessellation covers the unit square of the trim's own box: map it onto the domain.
+    expect_surfaces_match_tessellation(
+        "enneper", {surface}, {{16.0, -22.0, 14.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 30.0});
 }
 
 TEST(PatchRender, CertifiedTracingFindsTheSpoutWhereFloatingPointSturmDoesNot) {
