@@ -366,27 +366,10 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
     if (map.parameter_ring->num_vars() != 2 || map.coordinates.size() != 3) {
         throw InputError("--method dixon", "applies to surfaces (two parameters, x, y, z)");
     }
-    // Over a common denominator W (the product of the distinct denominators).
-    const auto& ring = map.parameter_ring;
-    std::vector<Polynomial> distinct;
-    for (const auto& c : map.components) {
-        if (std::find(distinct.begin(), distinct.end(), c.denominator()) == distinct.end()) {
-            distinct.push_back(c.denominator());
-        }
-    }
-    std::array<Polynomial, 4> pw{Polynomial(ring), Polynomial(ring), Polynomial(ring),
-                                 Polynomial::constant(ring, Rational(1))};
-    for (const auto& d : distinct) {
-        pw[3] *= d;
-    }
-    for (std::size_t i = 0; i < 3; ++i) {
-        pw[i] = map.components[i].numerator();
-        for (const auto& d : distinct) {
-            if (!(d == map.components[i].denominator())) {
-                pw[i] *= d;
-            }
-        }
-    }
+    // Over a common denominator W: (x, y, z) = (P1, P2, P3) / W.
+    CommonDenominatorForm form = over_common_denominator(map);
+    std::array<Polynomial, 4> pw{std::move(form.numerators[0]), std::move(form.numerators[1]),
+                                 std::move(form.numerators[2]), std::move(form.denominator)};
     if (!image_is_surface(pw)) {
         throw Error("the Dixon route needs a map whose image is a surface");
     }

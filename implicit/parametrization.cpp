@@ -303,4 +303,28 @@ Parametrization parse_parametrization(std::string_view text) {
     return result;
 }
 
+CommonDenominatorForm over_common_denominator(const Parametrization& map) {
+    std::vector<algebra::Polynomial> distinct;
+    for (const auto& c : map.components) {
+        if (std::find(distinct.begin(), distinct.end(), c.denominator()) == distinct.end()) {
+            distinct.push_back(c.denominator());
+        }
+    }
+    CommonDenominatorForm form{
+        {}, algebra::Polynomial::constant(map.parameter_ring, algebra::Rational(1))};
+    for (const auto& d : distinct) {
+        form.denominator *= d;
+    }
+    for (const auto& c : map.components) {
+        algebra::Polynomial numerator = c.numerator();
+        for (const auto& d : distinct) {
+            if (!(d == c.denominator())) {
+                numerator *= d;
+            }
+        }
+        form.numerators.push_back(std::move(numerator));
+    }
+    return form;
+}
+
 }  // namespace locus::implicit

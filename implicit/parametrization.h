@@ -45,4 +45,14 @@ struct Parametrization {
 // substitution (recorded in `half_angle`); the map as written is kept in `circle_components`.
 Parametrization parse_parametrization(std::string_view text);
 
+// The map over one common denominator: x_i = numerators[i] / denominator, where the
+// denominator is the product of the components' distinct denominators and each numerator is
+// multiplied by the denominators of the others. Dixon's matrices, the proof that f vanishes on
+// the map and the renderer's trim all work with this polynomial (homogeneous) form.
+struct CommonDenominatorForm {
+    std::vector<algebra::Polynomial> numerators;  // one per coordinate
+    algebra::Polynomial denominator;
+};
+CommonDenominatorForm over_common_denominator(const Parametrization& map);
+
 }  // namespace locus::implicit

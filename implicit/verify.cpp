@@ -318,7 +318,7 @@ bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numera
 }  // namespace
 
 bool vanishes_on(const Polynomial& f, const Parametrization& map, int threads) {
-    // Over a common denominator Q = Π qᵢ with Pᵢ = pᵢ·Π_{j≠i} qⱼ, and D = deg f,
+    // Over a common denominator Q (over_common_denominator: xᵢ = Pᵢ/Q), and D = deg f,
     //     g(u) = Σ c_α P(u)^α Q(u)^(D−|α|)   (f homogenized with Q)
     // is a polynomial whose degree in each parameter u_j is at most
     // B_j = D · max(maxᵢ deg_{u_j} Pᵢ, deg_{u_j} Q), and f vanishes on the map iff g = 0. A
@@ -328,26 +328,14 @@ bool vanishes_on(const Polynomial& f, const Parametrization& map, int threads) {
     // patch's degree-18 equation is checked on 55 × 55 points; grids beyond 200 000 points fall
     // back to the symbolic expansion.
     const RingPtr& params = map.parameter_ring;
-    const std::size_t n = map.coordinates.size();
     const std::size_t k = params->num_vars();
     const long total_degree = f.total_degree();
     if (total_degree <= 0) {
         return f.is_zero();
     }
-    Polynomial common = Polynomial::constant(params, Rational(1));
-    for (const auto& c : map.components) {
-        common *= c.denominator();
-    }
-    std::vector<Polynomial> numerators;
-    for (std::size_t i = 0; i < n; ++i) {
-        Polynomial numerator = map.components[i].numerator();
-        for (std::size_t j = 0; j < n; ++j) {
-            if (j != i) {
-                numerator *= map.components[j].denominator();
-            }
-        }
-        numerators.push_back(std::move(numerator));
-    }
+    CommonDenominatorForm form = over_common_denominator(map);
+    const Polynomial& common = form.denominator;
+    const std::vector<Polynomial>& numerators = form.numerators;
     std::vector<long> bound(k);
     double points = 1.0;
     for (std::size_t j = 0; j < k; ++j) {
