@@ -29,22 +29,26 @@ std::vector<implicit::BezierPatch> read_patches(const std::string& path, const s
     }
 }
 
+void append_terms(const algebra::Polynomial& f, std::vector<render::BivariateTerm>& terms) {
+    for (std::size_t i = 0; i < f.num_terms(); ++i) {
+        const auto e = f.exponents(i);
+        terms.push_back(
+            {fmpq_get_d(f.coefficient(i).get()), static_cast<int>(e[0]), static_cast<int>(e[1])});
+    }
+}
+
 // The patch's map with double coefficients, for the trim test.
 std::shared_ptr<const render::PatchTrim> trim_of(const implicit::BezierPatch& patch,
                                                  const algebra::RingPtr& ring) {
-    auto trim = std::make_shared<render::PatchTrim>();
-    trim->domain = patch.kind == implicit::BezierPatch::Kind::triangle
-                       ? render::PatchTrim::Domain::triangle
-                       : render::PatchTrim::Domain::box;
     const auto map = implicit::homogeneous_map(patch, ring);
+    std::array<std::vector<render::BivariateTerm>, 4> terms;
     for (std::size_t c = 0; c < 4; ++c) {
-        for (std::size_t i = 0; i < map[c].num_terms(); ++i) {
-            const auto e = map[c].exponents(i);
-            trim->map[c].push_back({fmpq_get_d(map[c].coefficient(i).get()), static_cast<int>(e[0]),
-                                    static_cast<int>(e[1])});
-        }
+        append_terms(map[c], terms[c]);
     }
-    return trim;
+    return std::make_shared<const render::PatchTrim>(
+        std::move(terms), patch.kind == implicit::BezierPatch::Kind::triangle
+                              ? render::PatchTrim::Domain::triangle
+                              : render::PatchTrim::Domain::box);
 }
 
 // The box of the control points, widened by a millionth of its size (rounding of the decimals).
@@ -63,14 +67,6 @@ render::ClipBox box_of(const implicit::BezierPatch& patch) {
     return box;
 }
 
-void append_terms(const algebra::Polynomial& f, std::vector<render::BivariateTerm>& terms) {
-    for (std::size_t i = 0; i < f.num_terms(); ++i) {
-        const auto e = f.exponents(i);
-        terms.push_back(
-            {fmpq_get_d(f.coefficient(i).get()), static_cast<int>(e[0]), static_cast<int>(e[1])});
-    }
-}
-
 }  // namespace
 
 void trim_to_domain(const std::string& path, const std::string& text, render::Surface& surface) {
@@ -83,41 +79,25 @@ void trim_to_domain(const std::string& path, const std::string& text, render::Su
     if (map.domain.empty() || map.parameter_ring->num_vars() != 2) {
         return;
     }
-    // Over the product of the distinct denominators.
-    const auto& ring = map.parameter_ring;
-    std::vector<algebra::Polynomial> distinct;
-    for (const auto& c : map.components) {
-        if (std::find(distinct.begin(), distinct.end(), c.denominator()) == distinct.end()) {
-            distinct.push_back(c.denominator());
-        }
+    const implicit::CommonDenominatorForm form = implicit::over_common_denominator(map);
+    std::array<std::vector<render::BivariateTerm>, 4> terms;
+    for (std::size_t i = 0; i < 3 && i < form.numerators.size(); ++i) {
+        append_terms(form.numerators[i], terms[i]);
     }
-    auto trim = std::make_shared<render::PatchTrim>();
-    algebra::Polynomial common = algebra::Polynomial::constant(ring, algebra::Rational(1));
-    for (const auto& d : distinct) {
-        common *= d;
-    }
-    for (std::size_t i = 0; i < 3 && i < map.components.size(); ++i) {
-        algebra::Polynomial numerator = map.components[i].numerator();
-        for (const auto& d : distinct) {
-            if (!(d == map.components[i].denominator())) {
-                numerator *= d;
-            }
-        }
-        append_terms(numerator, trim->map[i]);
-    }
-    append_terms(common, trim->map[3]);
-    trim->s0 = fmpq_get_d(map.domain[0].first.get());
-    trim->s1 = fmpq_get_d(map.domain[0].second.get());
-    trim->t0 = fmpq_get_d(map.domain[1].first.get());
-    trim->t1 = fmpq_get_d(map.domain[1].second.get());
+    append_terms(form.denominator, terms[3]);
+    const render::PatchTrim::Box domain{
+        fmpq_get_d(map.domain[0].first.get()), fmpq_get_d(map.domain[0].second.get()),
+        fmpq_get_d(map.domain[1].first.get()), fmpq_get_d(map.domain[1].second.get())};
+    auto trim = std::make_shared<const render::PatchTrim>(std::move(terms),
+                                                          render::PatchTrim::Domain::box, domain);
     // The clip box: the image of a 65 × 65 grid of the domain, widened by 5 % of its diagonal
     // on every side (sampled, not proved: a patch that bulges further between samples is cut).
     render::ClipBox box{render::Vec3(INFINITY), render::Vec3(-INFINITY)};
     constexpr int kGrid = 64;
     for (int i = 0; i <= kGrid; ++i) {
         for (int j = 0; j <= kGrid; ++j) {
-            const render::Vec3 p = trim->at(trim->s0 + (trim->s1 - trim->s0) * i / kGrid,
-                                            trim->t0 + (trim->t1 - trim->t0) * j / kGrid);
+            const render::Vec3 p = trim->at(domain.s0 + (domain.s1 - domain.s0) * i / kGrid,
+                                            domain.t0 + (domain.t1 - domain.t0) * j / kGrid);
             if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
                 box.min = glm::min(box.min, p);
                 box.max = glm::max(box.max, p);

@@ -11,26 +11,55 @@ constexpr int kSamples = 9;         // domain samples per direction for the star
 constexpr std::size_t kStarts = 4;  // starting points, at most
 constexpr int kIterations = 40;     // Gauss–Newton steps from a start
 constexpr double kDomainSlack = 1e-7;
+// Powers kept on the stack by evaluate; higher exponents (a `.param` of high degree) use the
+// heap. Bézier patches of the .bpt format stay far below (bicubic: 3).
+constexpr int kInlinePowers = 24;
 
-struct MapValue {
-    Vec3 point{0.0};
-    Vec3 ds{0.0}, dt{0.0};  // partial derivatives of P/W
+}  // namespace
+
+struct PatchTrim::Preimage {
+    double s = 0.0, t = 0.0, distance = std::numeric_limits<double>::infinity();
 };
 
+PatchTrim::PatchTrim(std::array<std::vector<BivariateTerm>, 4> map, Domain domain, Box box)
+    : map_(std::move(map)), domain_(domain), box_(box) {
+    for (const auto& component : map_) {
+        for (const BivariateTerm& term : component) {
+            highest_exponent_ = std::max({highest_exponent_, term.es, term.et});
+        }
+    }
+    for (int i = 0; i < kSamples; ++i) {
+        for (int j = 0; j < kSamples; ++j) {
+            const double u = i / (kSamples - 1.0), v = j / (kSamples - 1.0);
+            if (domain_ == Domain::triangle && u + v > 1.0 + 1e-12) {
+                continue;
+            }
+            const double s = box_.s0 + u * (box_.s1 - box_.s0),
+                         t = box_.t0 + v * (box_.t1 - box_.t0);
+            samples_.push_back({s, t, evaluate(s, t, false).point});
+        }
+    }
+}
+
 // P/W at (s, t), with its partial derivatives when `derivatives`.
-MapValue evaluate(const std::array<std::vector<BivariateTerm>, 4>& map, double s, double t,
-                  bool derivatives) {
-    // Powers of s and t (patch degrees are at most 16 in each parameter, 32 in total).
-    constexpr int kPowers = 34;
-    std::array<double, kPowers> ps{}, pt{};
+PatchTrim::Value PatchTrim::evaluate(double s, double t, bool derivatives) const {
+    const auto count = static_cast<std::size_t>(highest_exponent_ + 1);
+    std::array<double, 2 * kInlinePowers> inline_powers;
+    std::vector<double> heap_powers;
+    double* ps = inline_powers.data();
+    if (count > kInlinePowers) {
+        heap_powers.resize(2 * count);
+        ps = heap_powers.data();
+    }
+    double* pt = ps + count;
     ps[0] = pt[0] = 1.0;
-    for (int e = 1; e < kPowers; ++e) {
+    for (std::size_t e = 1; e < count; ++e) {
         ps[e] = ps[e - 1] * s;
         pt[e] = pt[e - 1] * t;
     }
     std::array<double, 4> v{}, vs{}, vt{};
     for (std::size_t c = 0; c < 4; ++c) {
-        for (const BivariateTerm& term : map[c]) {
+        for (const BivariateTerm& term : map_[c]) {
             v[c] += term.coefficient * ps[term.es] * pt[term.et];
             if (derivatives) {
                 if (term.es > 0) {
@@ -42,7 +71,7 @@ MapValue evaluate(const std::array<std::vector<BivariateTerm>, 4>& map, double s
             }
         }
     }
-    MapValue r;
+    Value r;
     const double w = v[3];
     r.point = Vec3(v[0], v[1], v[2]) / w;
     if (derivatives) {
@@ -53,25 +82,20 @@ MapValue evaluate(const std::array<std::vector<BivariateTerm>, 4>& map, double s
     return r;
 }
 
-bool in_domain(const PatchTrim& trim, double s, double t) {
-    if (trim.domain == PatchTrim::Domain::triangle) {
+bool PatchTrim::in_domain(double s, double t) const {
+    if (domain_ == Domain::triangle) {
         return s >= -kDomainSlack && t >= -kDomainSlack && s + t <= 1.0 + kDomainSlack;
     }
-    const double ds = kDomainSlack * (trim.s1 - trim.s0), dt = kDomainSlack * (trim.t1 - trim.t0);
-    return s >= trim.s0 - ds && s <= trim.s1 + ds && t >= trim.t0 - dt && t <= trim.t1 + dt;
+    const double ds = kDomainSlack * (box_.s1 - box_.s0), dt = kDomainSlack * (box_.t1 - box_.t0);
+    return s >= box_.s0 - ds && s <= box_.s1 + ds && t >= box_.t0 - dt && t <= box_.t1 + dt;
 }
-
-struct Preimage {
-    double s = 0.0, t = 0.0, distance = std::numeric_limits<double>::infinity();
-};
 
 // Gauss–Newton on |P(s,t)/W − p|² from (s, t), with a Levenberg term for rank-deficient
 // Jacobians (a collapsed edge).
-Preimage refine(const std::array<std::vector<BivariateTerm>, 4>& map, const Vec3& p, double s,
-                double t) {
+PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t) const {
     Preimage best;
     for (int i = 0; i < kIterations; ++i) {
-        const MapValue m = evaluate(map, s, t, true);
+        const Value m = evaluate(s, t, true);
         const Vec3 r = m.point - p;
         const double distance = glm::length(r);
         if (!(distance < best.distance)) {
@@ -101,19 +125,12 @@ Preimage refine(const std::array<std::vector<BivariateTerm>, 4>& map, const Vec3
 
 // Starting points: the domain samples closest to p, at least two sample steps apart, so that
 // every fold of a patch that passes near p gets a start of its own.
-std::vector<Preimage> starting_points(const PatchTrim& trim, const Vec3& p) {
+std::vector<PatchTrim::Preimage> PatchTrim::starting_points(const Vec3& p) const {
     std::vector<Preimage> samples;
-    for (int i = 0; i < kSamples; ++i) {
-        for (int j = 0; j < kSamples; ++j) {
-            const double u = i / (kSamples - 1.0), v = j / (kSamples - 1.0);
-            if (trim.domain == PatchTrim::Domain::triangle && u + v > 1.0 + 1e-12) {
-                continue;
-            }
-            const double s = trim.s0 + u * (trim.s1 - trim.s0),
-                         t = trim.t0 + v * (trim.t1 - trim.t0);
-            const double d = glm::length(evaluate(trim.map, s, t, false).point - p);
-            samples.push_back({s, t, std::isnan(d) ? INFINITY : d});
-        }
+    samples.reserve(samples_.size());
+    for (const Sample& sample : samples_) {
+        const double d = glm::length(sample.point - p);
+        samples.push_back({sample.s, sample.t, std::isnan(d) ? INFINITY : d});
     }
     std::sort(samples.begin(), samples.end(),
               [](const Preimage& a, const Preimage& b) { return a.distance < b.distance; });
@@ -126,8 +143,8 @@ std::vector<Preimage> starting_points(const PatchTrim& trim, const Vec3& p) {
         bool apart = std::isfinite(sample.distance);
         for (const Preimage& start : starts) {
             apart =
-                apart && std::max(std::abs(start.s - sample.s) / (trim.s1 - trim.s0),
-                                  std::abs(start.t - sample.t) / (trim.t1 - trim.t0)) >= separation;
+                apart && std::max(std::abs(start.s - sample.s) / (box_.s1 - box_.s0),
+                                  std::abs(start.t - sample.t) / (box_.t1 - box_.t0)) >= separation;
         }
         if (apart) {
             starts.push_back(sample);
@@ -138,11 +155,11 @@ std::vector<Preimage> starting_points(const PatchTrim& trim, const Vec3& p) {
 
 // The preimage in the domain closest to p among those refined from the starting points, or the
 // closest outside it when none is inside; `good_enough` stops the search early.
-Preimage find_preimage(const PatchTrim& trim, const Vec3& p, double good_enough) {
+PatchTrim::Preimage PatchTrim::find_preimage(const Vec3& p, double good_enough) const {
     Preimage inside, outside;
-    for (const Preimage& start : starting_points(trim, p)) {
-        const Preimage found = refine(trim.map, p, start.s, start.t);
-        Preimage& slot = in_domain(trim, found.s, found.t) ? inside : outside;
+    for (const Preimage& start : starting_points(p)) {
+        const Preimage found = refine(p, start.s, start.t);
+        Preimage& slot = in_domain(found.s, found.t) ? inside : outside;
         if (found.distance < slot.distance) {
             slot = found;
         }
@@ -153,20 +170,18 @@ Preimage find_preimage(const PatchTrim& trim, const Vec3& p, double good_enough)
     return std::isfinite(inside.distance) ? inside : outside;
 }
 
-}  // namespace
-
 bool PatchTrim::contains(const Vec3& p, double tolerance) const {
-    const Preimage found = find_preimage(*this, p, tolerance);
-    return found.distance <= tolerance && in_domain(*this, found.s, found.t);
+    const Preimage found = find_preimage(p, tolerance);
+    return found.distance <= tolerance && in_domain(found.s, found.t);
 }
 
 std::array<double, 2> PatchTrim::preimage(const Vec3& p) const {
-    const Preimage found = find_preimage(*this, p, 0.0);
+    const Preimage found = find_preimage(p, 0.0);
     return {found.s, found.t};
 }
 
 Vec3 PatchTrim::at(double s, double t) const {
-    return evaluate(map, s, t, false).point;
+    return evaluate(s, t, false).point;
 }
 
 }  // namespace locus::render

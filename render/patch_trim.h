@@ -31,14 +31,19 @@ struct BivariateTerm {
     int es, et;  // exponents of s and t
 };
 
-struct PatchTrim {
-    enum class Domain { box, triangle };
-    // X, Y, Z and the common denominator W (the constant 1 for polynomial patches).
-    std::array<std::vector<BivariateTerm>, 4> map;
-    // The box [s0, s1] × [t0, t1] (the unit square for tensor-product patches, the user's
-    // `domain:` for .param files), or the triangle s, t ≥ 0, s + t ≤ 1.
-    Domain domain = Domain::box;
+// A box [s0, s1] × [t0, t1] of parameters (the unit square for tensor-product patches, the
+// user's `domain:` for .param files).
+struct ParameterBox {
     double s0 = 0.0, s1 = 1.0, t0 = 0.0, t1 = 1.0;
+};
+
+class PatchTrim {
+  public:
+    // A triangular domain is s, t ≥ 0, s + t ≤ 1, whatever the box.
+    enum class Domain { box, triangle };
+    using Box = ParameterBox;
+    // `map`: X, Y, Z and the common denominator W (the constant 1 for polynomial patches).
+    PatchTrim(std::array<std::vector<BivariateTerm>, 4> map, Domain domain, Box box = {});
 
     // Is p the image of a point of the domain, within `tolerance` (a distance)?
     bool contains(const Vec3& p, double tolerance) const;
@@ -46,6 +51,34 @@ struct PatchTrim {
     std::array<double, 2> preimage(const Vec3& p) const;
     // The patch's point at (s, t).
     Vec3 at(double s, double t) const;
+
+    Domain domain() const { return domain_; }
+    const Box& box() const { return box_; }
+
+    // The map's point at (s, t) and its partial derivatives.
+    struct Value {
+        Vec3 point{0.0};
+        Vec3 ds{0.0}, dt{0.0};
+    };
+    // A domain sample: the grid of starting points for the preimage search, computed once.
+    struct Sample {
+        double s, t;
+        Vec3 point;
+    };
+
+  private:
+    struct Preimage;
+    Value evaluate(double s, double t, bool derivatives) const;
+    bool in_domain(double s, double t) const;
+    Preimage refine(const Vec3& p, double s, double t) const;
+    std::vector<Preimage> starting_points(const Vec3& p) const;
+    Preimage find_preimage(const Vec3& p, double good_enough) const;
+
+    std::array<std::vector<BivariateTerm>, 4> map_;
+    Domain domain_;
+    Box box_;
+    int highest_exponent_ = 0;  // of s or t in the map: the table of powers evaluate needs
+    std::vector<Sample> samples_;
 };
 
 // The first root in `interval` whose point is on the patch: `first_hit(interval)` is asked
