@@ -1,11 +1,15 @@
 // Trimmed rendering of Bézier patches, checked against a renderer that shares no code with it:
-// a fine tessellation of the parametrization, intersected ray by ray (Möller–Trumbore), with the
-// same camera. The silhouettes must agree to within 0.5 % of the pixels and the depths to within
-// the tessellation's own error. Also: the trim test accepts points of the patch and refuses
-// points of the implicit surface beyond the patch's edges.
+// a fine tessellation of the parametrization (its vertices by de Casteljau on control points the
+// test reads itself, or by the parametrization's own formulas), intersected ray by ray
+// (Möller–Trumbore), with the same camera; designed patches and random ones. The silhouettes must
+// agree to within 0.5 % of the pixels and the depths to within the tessellation's own error. Also:
+// the trim test accepts points of the patch and refuses points of the implicit surface beyond the
+// patch's edges.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <random>
 #include <sstream>
 
 #include "algebra/compiled.h"
@@ -43,19 +47,84 @@ TEST(PatchTrim, PointsBeyondTheEdgesOfTheDomainAreRefused) {
     EXPECT_FALSE(plane[0].trim->contains({0.7, 0.7, -0.4}, 1e-9));
 }
 
+TEST(PatchTrim, ExponentsOfAnyHeightAreEvaluated) {
+    // Regression: the trim's evaluator kept a fixed table of 34 powers and read past its end for
+    // a `.param` of higher degree.
+    Surface surface;
+    surface.equation = "x-y^40";
+    cli::trim_to_domain("high.param",
+                        "params: u,v\ndomain: u in [0, 1], v in [0, 1]\nx = u^40\ny = u\n"
+                        "z = u*v^37\n",
+                        surface);
+    ASSERT_TRUE(surface.trim);
+    const Vec3 p = surface.trim->at(0.9, 0.95);
+    EXPECT_NEAR(p.x, std::pow(0.9, 40), 1e-15);
+    EXPECT_NEAR(p.z, 0.9 * std::pow(0.95, 37), 1e-15);
+    EXPECT_TRUE(surface.trim->contains(p, 1e-9));
+    EXPECT_FALSE(surface.trim->contains({std::pow(1.1, 40), 1.1, 0.5}, 1e-9));
+}
+
+// The oracle's own patch evaluation: control points read from the test's text (not by locus's
+// parser) and evaluated by de Casteljau's algorithm in homogeneous coordinates — sharing
+// neither the Bernstein-to-monomial conversion nor the evaluator with the trim under test.
+struct ControlNet {
+    int m = 0, n = 0;
+    std::vector<std::array<double, 4>> points;  // w·x, w·y, w·z, w
+};
+
+ControlNet read_control_net(const std::string& text) {
+    std::istringstream in(text);
+    ControlNet net;
+    std::string word, line;
+    in >> word >> net.m >> net.n;  // "bezier: m n"
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        std::array<double, 4> p{0.0, 0.0, 0.0, 1.0};
+        if (!(fields >> p[0] >> p[1] >> p[2])) {
+            continue;
+        }
+        fields >> p[3];
+        net.points.push_back({p[3] * p[0], p[3] * p[1], p[3] * p[2], p[3]});
+    }
+    EXPECT_EQ(net.points.size(), static_cast<std::size_t>((net.m + 1) * (net.n + 1)));
+    return net;
+}
+
+std::array<double, 4> de_casteljau(std::vector<std::array<double, 4>> points, double u) {
+    for (std::size_t r = 1; r < points.size(); ++r) {
+        for (std::size_t j = 0; j + r < points.size(); ++j) {
+            for (int c = 0; c < 4; ++c) {
+                points[j][c] = (1.0 - u) * points[j][c] + u * points[j + 1][c];
+            }
+        }
+    }
+    return points[0];
+}
+
+Vec3 point_of(const ControlNet& net, double s, double t) {
+    std::vector<std::array<double, 4>> column;
+    for (int i = 0; i <= net.m; ++i) {
+        const auto row = net.points.begin() + i * (net.n + 1);
+        column.push_back(de_casteljau({row, row + net.n + 1}, t));
+    }
+    const auto h = de_casteljau(column, s);
+    return Vec3(h[0], h[1], h[2]) / h[3];
+}
+
 // Hit mask and depth of a tessellated patch for every pixel.
 struct TessellatedView {
     std::vector<double> depth;  // +inf on a miss
     double error = 0.0;         // largest distance of the patch from its triangles (sampled)
 };
 
-TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera, int width,
-                                     int height, int cells) {
+// `at` maps the unit square onto the patch.
+TessellatedView tessellate_and_trace(const std::function<Vec3(double, double)>& at,
+                                     const Camera& camera, int width, int height, int cells) {
     std::vector<Vec3> grid;
     for (int i = 0; i <= cells; ++i) {
         for (int j = 0; j <= cells; ++j) {
-            grid.push_back(trim.at(trim.s0 + (trim.s1 - trim.s0) * i / cells,
-                                   trim.t0 + (trim.t1 - trim.t0) * j / cells));
+            grid.push_back(at(static_cast<double>(i) / cells, static_cast<double>(j) / cells));
         }
     }
     auto vertex = [&](int i, int j) { return grid[static_cast<std::size_t>(i * (cells + 1) + j)]; };
@@ -68,8 +137,7 @@ TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera
             triangles.push_back({a, b, c});
             triangles.push_back({a, c, d});
             // The patch at the cell's centre against the triangles' shared edge midpoint.
-            const Vec3 mid = trim.at(trim.s0 + (trim.s1 - trim.s0) * (i + 0.5) / cells,
-                                     trim.t0 + (trim.t1 - trim.t0) * (j + 0.5) / cells);
+            const Vec3 mid = at((i + 0.5) / cells, (j + 0.5) / cells);
             view.error = std::max(view.error, glm::length(mid - 0.5 * (a + c)));
         }
     }
@@ -101,8 +169,9 @@ TessellatedView tessellate_and_trace(const PatchTrim& trim, const Camera& camera
     return view;
 }
 
-void expect_surfaces_match_tessellation(const std::string& name, std::vector<Surface> surfaces,
-                                        const CameraSpec& spec) {
+void expect_surfaces_match_tessellation(
+    const std::string& name, std::vector<Surface> surfaces,
+    const std::vector<std::function<Vec3(double, double)>>& patches, const CameraSpec& spec) {
     SCOPED_TRACE(name);
     Scene scene;
     scene.surfaces = std::move(surfaces);
@@ -122,9 +191,9 @@ void expect_surfaces_match_tessellation(const std::string& name, std::vector<Sur
     const std::size_t pixels = image.depth.size();
     std::vector<double> reference(pixels, INFINITY);
     double error = 0.0;
-    for (const auto& surface : scene.surfaces) {
+    for (const auto& at : patches) {
         const TessellatedView view =
-            tessellate_and_trace(*surface.trim, camera, scene.width, scene.height, 48);
+            tessellate_and_trace(at, camera, scene.width, scene.height, 48);
         error = std::max(error, view.error);
         for (std::size_t i = 0; i < pixels; ++i) {
             reference[i] = std::min(reference[i], view.depth[i]);
@@ -149,7 +218,10 @@ void expect_surfaces_match_tessellation(const std::string& name, std::vector<Sur
 
 void expect_trimmed_render_matches_tessellation(const std::string& name, const std::string& text,
                                                 const CameraSpec& spec) {
-    expect_surfaces_match_tessellation(name, cli::patch_surfaces(name, text, std::nullopt), spec);
+    const ControlNet net = read_control_net(text);
+    expect_surfaces_match_tessellation(name, cli::patch_surfaces(name, text, std::nullopt),
+                                       {[net](double s, double t) { return point_of(net, s, t); }},
+                                       spec);
 }
 
 TEST(PatchRender, TrimmedPatchesMatchTheirTessellation) {
@@ -169,6 +241,53 @@ TEST(PatchRender, TrimmedPatchesMatchTheirTessellation) {
         "bezier: 2 2\n0 0 3\n0 0 3\n0 0 3\n2 0 1\n1 2 1\n-1 1 2\n0 1 0\n1 -1 3\n2 2 1\n", camera);
 }
 
+// A random biquadratic patch: integer control points in [-2, 2]³, weights in {1/2, 1, 3/2, 2}
+// when `rational`; `collapse` pulls the first row of points to within 1e-3 of one point (an
+// almost-degenerate edge).
+std::string random_patch(std::mt19937& rng, bool rational, bool collapse) {
+    std::uniform_int_distribution<int> coordinate(-2, 2), weight(1, 4);
+    std::ostringstream text;
+    text << "bezier: 2 2\n";
+    std::array<int, 3> first{};
+    for (int k = 0; k < 9; ++k) {
+        std::array<int, 3> p{coordinate(rng), coordinate(rng), coordinate(rng)};
+        if (k == 0) {
+            first = p;
+        }
+        if (collapse && k < 3) {
+            text << first[0] + 0.001 * k << ' ' << first[1] << ' ' << first[2] - 0.001 * k;
+        } else {
+            text << p[0] << ' ' << p[1] << ' ' << p[2];
+        }
+        if (rational) {
+            text << ' ' << 0.5 * weight(rng);
+        }
+        text << "\n";
+    }
+    return text.str();
+}
+
+TEST(PatchRender, RandomPatchesMatchTheirTessellation) {
+    // Patches nobody designed: polynomial, rational and almost-collapsed ones, seen from a
+    // camera placed by their control points' box.
+    std::mt19937 rng(20261126);
+    for (int k = 0; k < 6; ++k) {
+        const std::string text = random_patch(rng, k % 2 == 1, k >= 4);
+        const ControlNet net = read_control_net(text);
+        Vec3 lo(INFINITY), hi(-INFINITY);
+        for (const auto& p : net.points) {
+            lo = glm::min(lo, Vec3(p[0], p[1], p[2]) / p[3]);
+            hi = glm::max(hi, Vec3(p[0], p[1], p[2]) / p[3]);
+        }
+        const Vec3 centre = 0.5 * (lo + hi);
+        const double size = std::max(1.0, glm::length(hi - lo));
+        const Vec3 eye = centre + 1.2 * size * glm::normalize(Vec3(1.3, -0.9, 0.8));
+        expect_trimmed_render_matches_tessellation(
+            "random patch " + std::to_string(k) + ":\n" + text, text,
+            {eye, centre, {0.0, 0.0, 1.0}, 40.0});
+    }
+}
+
 TEST(PatchRender, AParametrizationTrimmedToItsDomainMatchesItsTessellation) {
     // Enneper's surface for |u|, |v| ≤ 2: its degree-9 equation describes the whole surface.
     const std::string text =
@@ -181,11 +300,16 @@ TEST(PatchRender, AParametrizationTrimmedToItsDomainMatchesItsTessellation) {
     surface.equation = algebra::to_string(*r.equation);
     cli::trim_to_domain("enneper.param", text, surface);
     ASSERT_TRUE(surface.trim);
-    EXPECT_EQ(surface.trim->s0, -2.0);
-    EXPECT_EQ(surface.trim->t1, 2.0);
-    // The tessellation covers the unit square of the trim's own box: map it onto the domain.
+    EXPECT_EQ(surface.trim->box().s0, -2.0);
+    EXPECT_EQ(surface.trim->box().t1, 2.0);
+    // The tessellation evaluates Enneper's formulas itself, over the domain.
+    const auto enneper = [](double a, double b) {
+        const double u = 4.0 * a - 2.0, v = 4.0 * b - 2.0;
+        return Vec3(u - u * u * u / 3 + u * v * v, v - v * v * v / 3 + v * u * u, u * u - v * v);
+    };
     expect_surfaces_match_tessellation(
-        "enneper", {surface}, {{16.0, -22.0, 14.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 30.0});
+        "enneper", {surface}, {enneper},
+        {{16.0, -22.0, 14.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 30.0});
 }
 
 TEST(PatchRender, CertifiedTracingFindsTheSpoutWhereFloatingPointSturmDoesNot) {
