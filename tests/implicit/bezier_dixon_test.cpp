@@ -44,13 +44,19 @@ bool zero_at_sample_points(const Polynomial& f, const Parametrization& map) {
     return true;
 }
 
-std::string refusal_bpt(const char* text) {
+// The message with which `parse` refuses `text`, or "accepted".
+template <class Parse>
+std::string refusal(Parse&& parse, const char* text) {
     try {
-        parse_bpt(text);
+        parse(text);
     } catch (const ParseError& e) {
         return e.what();
     }
     return "accepted";
+}
+
+std::string refusal_bpt(const char* text) {
+    return refusal(parse_bpt, text);
 }
 
 TEST(BezierPatch, TheBilinearPatchIsTheHyperbolicParaboloid) {
@@ -119,12 +125,7 @@ TEST(BezierPatch, MalformedFilesAreRefusedAtTheirLineAndColumn) {
 }
 
 std::string refusal_param(const char* text) {
-    try {
-        parse_parametrization(text);
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "accepted";
+    return refusal(parse_parametrization, text);
 }
 
 TEST(ParamDomain, ADomainLineBoundsEveryParameterExactly) {
