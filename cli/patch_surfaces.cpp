@@ -10,6 +10,7 @@
 
 #include "algebra/error.h"
 #include "algebra/print.h"
+#include "algebra/real_roots.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
 #include "implicit/bezier_patch.h"
@@ -49,6 +50,36 @@ std::shared_ptr<const render::PatchTrim> trim_of(const implicit::BezierPatch& pa
         std::move(terms), patch.kind == implicit::BezierPatch::Kind::triangle
                               ? render::PatchTrim::Domain::triangle
                               : render::PatchTrim::Domain::box);
+}
+
+// A frame centred on the patch's box and scaled to it, and the patch's equation f written in it:
+// g(x') = f(origin + scale·x'), exactly (render/surface_frame.h says why). The origin is the
+// box's centre rounded to a multiple of scale/1024, a dyadic number, so the double the renderer
+// subtracts and the rational substituted here are the same number.
+std::pair<render::SurfaceFrame, algebra::Polynomial> framed(const algebra::Polynomial& f,
+                                                            const render::ClipBox& box) {
+    render::SurfaceFrame frame;
+    const render::Vec3 half = 0.5 * (box.max - box.min);
+    frame.scale = render::power_of_two_at_least(std::max({half.x, half.y, half.z}));
+    const double grid = frame.scale / 1024.0;
+    const algebra::RingPtr& ring = f.ring();
+    std::vector<algebra::Polynomial> values;
+    for (std::size_t var = 0; var < ring->num_vars(); ++var) {
+        values.push_back(algebra::Polynomial::variable(ring, var));
+    }
+    for (int c = 0; c < 3; ++c) {
+        frame.origin[c] = std::round(0.5 * (box.min[c] + box.max[c]) / grid) * grid;
+        const auto var = ring->variable_index(std::string(1, static_cast<char>('x' + c)));
+        if (!var) {
+            continue;
+        }
+        algebra::Rational origin, scale;
+        algebra::set_exact_double(origin.get(), frame.origin[c]);
+        algebra::set_exact_double(scale.get(), frame.scale);
+        values[*var] = algebra::Polynomial::constant(ring, origin) +
+                       algebra::Polynomial::constant(ring, scale) * values[*var];
+    }
+    return {frame, f.substitute(values).primitive_part()};
 }
 
 // The box of the control points, widened by a millionth of its size (rounding of the decimals).
@@ -161,9 +192,11 @@ std::vector<render::Surface> patch_surfaces(const std::string& path, const std::
         }
         ++routes[result.method];
         render::Surface surface;
-        surface.equation = algebra::to_string(*result.equation);
-        surface.source = name;
         surface.clip = box_of(patches[k]);
+        auto [frame, local] = framed(*result.equation, std::get<render::ClipBox>(surface.clip));
+        surface.equation = algebra::to_string(local);
+        surface.frame = frame;
+        surface.source = name;
         surface.fit_clip = false;
         surface.trim = trim_of(patches[k], map.parameter_ring);
         // Which side of a patch's implicit surface is "inside" depends on the sign its equation

@@ -41,4 +41,16 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
     base_ = forward_ - half_width * right + half_height * true_up;
 }
 
+Camera Camera::in_frame(const SurfaceFrame& frame) const {
+    Camera local = *this;
+    const double inverse = 1.0 / frame.scale;
+    local.eye_ = (eye_ - frame.origin) * inverse;
+    local.base_ = base_ * inverse;
+    local.per_column_ = per_column_ * inverse;
+    local.per_row_ = per_row_ * inverse;
+    // Scaled so that d·forward stays 1 for every ray direction d (the ray families' premise).
+    local.forward_ = forward_ * frame.scale;
+    return local;
+}
+
 }  // namespace locus::render

@@ -8,6 +8,7 @@
 // per frame (render/ray_family.h).
 #pragma once
 
+#include "render/surface_frame.h"
 #include "render/vec3.h"
 
 namespace locus::render {
@@ -31,7 +32,12 @@ class Camera {
     const Vec3& base() const { return base_; }
     const Vec3& per_column() const { return per_column_; }
     const Vec3& per_row() const { return per_row_; }
+    // The viewing direction w, with d·w = 1 for every ray direction d (unit length in the
+    // world's coordinates).
     const Vec3& forward() const { return forward_; }
+    // The camera in a surface's frame: its rays are exactly frame.to_local(ray(x, y)) (the
+    // scale is a power of two, so dividing the direction's terms by it commutes with rounding).
+    Camera in_frame(const SurfaceFrame& frame) const;
 
   private:
     Vec3 eye_, forward_, base_, per_column_, per_row_;

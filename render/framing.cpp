@@ -25,6 +25,21 @@ std::string describe(const ClipRegion& region) {
     return "the box from " + format_point(box.min) + " to " + format_point(box.max);
 }
 
+// A framed surface's extent, found in its frame, in the world's coordinates.
+SurfaceExtent in_world(SurfaceExtent extent, const SurfaceFrame& frame) {
+    extent.low = frame.to_world(extent.low);
+    extent.high = frame.to_world(extent.high);
+    return extent;
+}
+
+ClipRegion to_local(const ClipRegion& region, const SurfaceFrame& frame) {
+    if (const auto* sphere = std::get_if<ClipSphere>(&region)) {
+        return ClipSphere{frame.to_local(sphere->center), sphere->radius / frame.scale};
+    }
+    const auto& box = std::get<ClipBox>(region);
+    return ClipBox{frame.to_local(box.min), frame.to_local(box.max)};
+}
+
 }  // namespace
 
 std::vector<std::optional<SurfaceExtent>> fit_clip_regions(
@@ -36,7 +51,7 @@ std::vector<std::optional<SurfaceExtent>> fit_clip_regions(
         if (!force && !surface.fit_clip) {
             continue;
         }
-        extents[i] = estimate_extent(surfaces[i], 1024, deadline);
+        extents[i] = in_world(estimate_extent(surfaces[i], 1024, deadline), surface.frame);
         surface.clip = fitted_clip_sphere(*extents[i]).value_or(ClipSphere{});
     }
     return extents;
@@ -47,7 +62,7 @@ std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomia
                         std::optional<SurfaceExtent> extent,
                         std::optional<std::chrono::steady_clock::time_point> deadline) {
     if (!extent) {
-        extent = estimate_extent(f, 1024, deadline);
+        extent = in_world(estimate_extent(f, 1024, deadline), surface.frame);
     }
     if (extent->kind == SurfaceExtent::Kind::none_found) {
         return "no real point of it was found on " + std::to_string(extent->lines) +
@@ -55,7 +70,11 @@ std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomia
                "or too far from the origin to be met (then give a clip region: --clip-radius, "
                "or clip keys in a scene file)";
     }
-    const std::optional<ClipBox> inside = box_in_region(f, surface.clip, 1024, deadline);
+    std::optional<ClipBox> inside =
+        box_in_region(f, to_local(surface.clip, surface.frame), 1024, deadline);
+    if (inside) {
+        *inside = {surface.frame.to_world(inside->min), surface.frame.to_world(inside->max)};
+    }
     if (!inside) {
         std::string where;
         if (extent->kind == SurfaceExtent::Kind::bounded) {

@@ -7,12 +7,20 @@ namespace locus::render {
 PrimaryTracer::PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera& camera,
                              const ClipRegion& clip, int width, int height,
                              const SurfaceTracer& tracer)
-    : tracer_(&tracer) {
-    const ClipSphere bounds = bounding_sphere(clip);
+    : tracer_(&tracer),
+      local_camera_(std::make_unique<const Camera>(camera.in_frame(tracer.frame()))) {
+    const SurfaceFrame& frame = tracer.frame();
+    const ClipSphere world_bounds = bounding_sphere(clip);
+    // The families take the sphere's centre in the frame and its radius as a range of t: the
+    // world's radius, since t is the same in both (widened by what moving the centre into the
+    // frame may have rounded away).
+    const Vec3 center = frame.to_local(world_bounds.center);
+    const double radius = world_bounds.radius;
+    const ClipSphere bounds{center, radius + 1e-15 * (glm::length(center) * frame.scale + radius)};
     switch (tracer.method()) {
     case TraceMethod::certified:
-        certified_ = std::make_unique<CertifiedRayFamily>(f, camera, bounds.center, bounds.radius,
-                                                          width, height);
+        certified_ = std::make_unique<CertifiedRayFamily>(f, *local_camera_, bounds.center,
+                                                          bounds.radius, width, height);
         family_ = certified_->certified() ? Family::certified : Family::none;
         break;
     case TraceMethod::sphere_gradient:
@@ -20,7 +28,8 @@ PrimaryTracer::PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera&
         break;
     default:
         if (f.degree() <= kMaxFamilyDegree) {
-            floating_ = std::make_unique<RayFamily>(f, camera, bounds.center, width, height);
+            floating_ =
+                std::make_unique<RayFamily>(f, *local_camera_, bounds.center, width, height);
             family_ = Family::floating;
         }
         break;

@@ -17,7 +17,8 @@ namespace locus::render {
 
 class PrimaryTracer {
   public:
-    // The polynomial and the camera must outlive the tracer.
+    // The polynomial and the camera must outlive the tracer. The ray families work in the
+    // tracer's frame (with the camera moved into it: Camera::in_frame).
     PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera& camera,
                   const ClipRegion& clip, int width, int height, const SurfaceTracer& tracer);
 
@@ -36,6 +37,7 @@ class PrimaryTracer {
   private:
     enum class Family { none, floating, certified };
     const SurfaceTracer* tracer_;
+    std::unique_ptr<const Camera> local_camera_;  // the families keep a pointer to it
     Family family_ = Family::none;
     std::unique_ptr<RayFamily> floating_;
     std::unique_ptr<CertifiedRayFamily> certified_;

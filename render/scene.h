@@ -16,6 +16,7 @@
 #include "render/material.h"
 #include "render/patch_trim.h"
 #include "render/sdf/node.h"
+#include "render/surface_frame.h"
 #include "render/trace_method.h"
 
 namespace locus::render {
@@ -32,7 +33,7 @@ struct Light {
 };
 
 struct Surface {
-    std::string equation;    // over x, y, z
+    std::string equation;    // over x, y, z: the coordinates of `frame`
     std::string param_file;  // or a .param file, implicitized by the caller (cli/)
     ClipRegion clip = ClipSphere{};
     Material material;
@@ -43,6 +44,9 @@ struct Surface {
     // A surface that is a patch's implicit equation: only hits on the patch count
     // (render/patch_trim.h). Shared: copies of a scene share the map.
     std::shared_ptr<const PatchTrim> trim = nullptr;
+    // The coordinates the equation is written in (identity: the world's). Patches get one
+    // centred on them, which their equations need to be well conditioned in doubles.
+    SurfaceFrame frame = {};
 };
 
 struct RenderOptions {

@@ -119,8 +119,7 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
     const ShadedSurface& surface = surfaces_[index];
     const Vec3 point = ray.at(t);
     const Vec3 view = -glm::normalize(ray.direction);
-    const FacingSide side =
-        facing_side(to_vec(surface.tracer->polynomial().gradient(to_point(point))), view);
+    const FacingSide side = facing_side(surface.tracer->gradient(point), view);
     // A pattern is decided just inside the surface (against the outward normal), the same
     // for every pixel of a flat cell boundary.
     const Vec3 outward = side.outside ? side.normal : -side.normal;

@@ -25,14 +25,19 @@ AnyRootFinder finder_for(TraceMethod method) {
 }  // namespace
 
 SurfaceTracer::SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod method, double scale,
-                             double tolerance)
+                             double tolerance, const SurfaceFrame& frame)
     : f_(&f),
       restrictor_(f.terms()),
       certified_(f),
       method_(method),
       finder_(finder_for(method)),
-      scale_(scale),
-      tolerance_(tolerance) {}
+      scale_(scale / frame.scale),
+      tolerance_(tolerance),
+      frame_(frame) {}
+
+Vec3 SurfaceTracer::gradient(const Vec3& world_point) const {
+    return to_vec(f_->gradient(to_point(frame_.to_local(world_point))));
+}
 
 std::optional<RootResult> SurfaceTracer::without_restriction(const Ray& ray,
                                                              Interval& interval) const {
@@ -71,7 +76,8 @@ std::optional<RootResult> SurfaceTracer::without_restriction(const Ray& ray,
     return std::nullopt;
 }
 
-RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval, double hint) const {
+RootResult SurfaceTracer::first_hit(const Ray& world_ray, Interval interval, double hint) const {
+    const Ray ray = frame_.to_local(world_ray);
     if (const std::optional<RootResult> answer = without_restriction(ray, interval)) {
         return *answer;
     }
@@ -80,8 +86,9 @@ RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval, double hi
     return on_restriction(computed, interval, ray, hint);
 }
 
-RootResult SurfaceTracer::first_hit(const Ray& ray, Interval interval,
+RootResult SurfaceTracer::first_hit(const Ray& world_ray, Interval interval,
                                     const RayRestriction& restriction, double hint) const {
+    const Ray ray = frame_.to_local(world_ray);
     if (const std::optional<RootResult> answer = without_restriction(ray, interval)) {
         return *answer;
     }

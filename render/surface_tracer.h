@@ -18,6 +18,7 @@
 #include "render/certified_tracer.h"
 #include "render/ray_restriction.h"
 #include "render/root_finder.h"
+#include "render/surface_frame.h"
 #include "render/trace_method.h"
 #include "render/vec3.h"
 
@@ -33,12 +34,18 @@ class SurfaceTracer {
   public:
     // `scale`: the size of the scene (a clip radius), which sets the sphere-tracing tolerances.
     // `tolerance`: the relative accuracy of a certified hit (CertifiedTracer).
-    // The polynomial must outlive the tracer.
+    // `frame`: the coordinates f is written in (render/surface_frame.h); rays are given in
+    // the world's and moved into the frame, with the same t. The polynomial must outlive the
+    // tracer.
     SurfaceTracer(const algebra::CompiledPolynomial& f, TraceMethod method, double scale,
-                  double tolerance = kTraceTolerance);
+                  double tolerance = kTraceTolerance, const SurfaceFrame& frame = {});
 
     TraceMethod method() const { return method_; }
     const algebra::CompiledPolynomial& polynomial() const { return *f_; }
+    const SurfaceFrame& frame() const { return frame_; }
+    // The gradient of f at a point of the world, in the frame's units (its direction is the
+    // surface normal's in the world: the frame scales uniformly).
+    Vec3 gradient(const Vec3& world_point) const;
 
     // The smallest t in `interval` with f(ray.at(t)) = 0. The methods that need the
     // restriction of f to the ray compute it about the interval's midpoint, where the terms of
@@ -56,7 +63,8 @@ class SurfaceTracer {
     // [t_start, t_start + t_width] (CertifiedTracer::first_hit_from).
     RootResult first_hit_from(const BernsteinBall& ball, double t_start, double t_width,
                               const Ray& ray, Interval interval) const {
-        return certified_.first_hit_from(ball, t_start, t_width, ray, interval, tolerance_);
+        return certified_.first_hit_from(ball, t_start, t_width, frame_.to_local(ray), interval,
+                                         tolerance_);
     }
 
   private:
@@ -72,8 +80,9 @@ class SurfaceTracer {
     CertifiedTracer certified_;
     TraceMethod method_;
     AnyRootFinder finder_;
-    double scale_;
+    double scale_;  // in the frame's units
     double tolerance_;
+    SurfaceFrame frame_;
 };
 
 }  // namespace locus::render

@@ -30,7 +30,10 @@ TEST(PatchTrim, PointsBeyondTheEdgesOfTheDomainAreRefused) {
     const auto surfaces =
         cli::patch_surfaces("bilinear.bpt", "1\n1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n", std::nullopt);
     ASSERT_EQ(surfaces.size(), 1u);
-    EXPECT_EQ(surfaces[0].equation, "x*y-z");
+    // z = x·y, written in the frame centred on the box of control points: x = 1/2 + x', ….
+    EXPECT_EQ(surfaces[0].frame.origin, Vec3(0.5));
+    EXPECT_EQ(surfaces[0].frame.scale, 1.0);
+    EXPECT_EQ(surfaces[0].equation, "4*x*y+2*x+2*y-4*z-1");
     const PatchTrim& trim = *surfaces[0].trim;
     EXPECT_TRUE(trim.contains({0.5, 0.25, 0.125}, 1e-9));
     EXPECT_TRUE(trim.contains({1.0, 1.0, 1.0}, 1e-9));    // a corner
@@ -331,7 +334,8 @@ TEST(PatchRender, CertifiedTracingFindsTheSpoutWhereFloatingPointSturmDoesNot) {
     const PatchTrim& trim = *surfaces[0].trim;
     const algebra::CompiledPolynomial f = algebra::compile_surface(surfaces[0].equation);
     ASSERT_EQ(f.degree(), 18);
-    const SurfaceTracer certified(f, TraceMethod::certified, 5.0, kRenderTolerance);
+    const SurfaceTracer certified(f, TraceMethod::certified, 5.0, kRenderTolerance,
+                                  surfaces[0].frame);
     int at_point = 0;
     for (const double s : {0.1, 0.5, 0.8, 0.9, 0.95}) {
         for (const double t : {0.1, 0.3, 0.5, 0.7, 0.9}) {

@@ -59,8 +59,8 @@ TEST_P(SphereImage, SilhouetteRadiusAndCentreShadingMatchTheFormulas) {
     const Material m;
     const Vec3 l = scene.lights[0].direction;
     const Vec3 h = glm::normalize(l + Vec3(0, 0, 1));
-    const Vec3 expected = m.ambient * m.color + m.diffuse * l.z * m.color +
-                          m.specular * std::pow(h.z, m.shininess);
+    const Vec3 expected =
+        m.ambient * m.color + m.diffuse * l.z * m.color + m.specular * std::pow(h.z, m.shininess);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(image.color[3 * centre + c], expected[c], 1e-5) << "channel " << c;
     }
