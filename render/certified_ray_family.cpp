@@ -27,14 +27,16 @@ Vec3 direction_rounding(const Camera& camera, double x, double y) {
 }  // namespace
 
 CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
-                                       const Vec3& center, double radius, int width, int height)
+                                       const Vec3& center, double radius, const ImageRect& rect)
     : degree_(f.degree()),
-      center_x_(0.5 * width),
-      half_width_(0.5 * width),
-      center_y_(0.5 * height),
-      half_height_(0.5 * height) {
+      center_x_(0.5 * (rect.x0 + rect.x1)),
+      half_width_(0.5 * (rect.x1 - rect.x0)),
+      center_y_(0.5 * (rect.y0 + rect.y1)),
+      half_height_(0.5 * (rect.y1 - rect.y0)) {
     const int n = degree_;
-    if (n < 0 || n > kMaxDegree || !(radius > 0.0)) {
+    // The bounds below take image coordinates as non-negative (|x| ≤ center + half-width).
+    if (n < 0 || n > kMaxDegree || !(radius > 0.0) || !(rect.x0 >= 0.0) || !(rect.y0 >= 0.0) ||
+        !(half_width_ > 0.0) || !(half_height_ > 0.0)) {
         return;
     }
     const auto nodes = static_cast<std::size_t>(n + 1);
@@ -111,10 +113,12 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
         4.0 * kUnit * (glm::abs(eye) + std::abs(plane_t) * glm::abs(d_center));
     const Vec3 largest_direction =
         radius * (glm::abs(d_center) + slope_u + slope_v) * (1.0 + 1e-12);
-    const Vec3 pixel_error = direction_rounding(camera, 2.0 * center_x_, 2.0 * center_y_) +
+    // (|x| ≤ cx + hw in the rectangle, so |x| + cx ≤ 2·(cx + hw).)
+    const double largest_x = center_x_ + half_width_, largest_y = center_y_ + half_height_;
+    const Vec3 pixel_error = direction_rounding(camera, largest_x, largest_y) +
                              4.1 * kUnit *
-                                 (4.0 * center_x_ * glm::abs(camera.per_column()) +
-                                  4.0 * center_y_ * glm::abs(camera.per_row())) +
+                                 (2.0 * largest_x * glm::abs(camera.per_column()) +
+                                  2.0 * largest_y * glm::abs(camera.per_row())) +
                              direction_rounding(camera, center_x_, center_y_);
     LineError pixel_line;
     pixel_line.origin = std::abs(plane_t) * pixel_error;

@@ -28,11 +28,20 @@
 
 namespace locus::render {
 
+// A rectangle of continuous image coordinates: x0 ≤ x ≤ x1, y0 ≤ y ≤ y1.
+struct ImageRect {
+    double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+    bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+};
+
 class CertifiedRayFamily {
   public:
-    // `center`, `radius`: a sphere holding every clip interval of the frame.
+    // `center`, `radius`: a sphere holding every clip interval of the frame. `rect`: the image
+    // points whose rays the family serves (all of them: {0, 0, width, height}); the balls hold
+    // for those only. The smaller the rectangle, the narrower the balls: a surface that covers
+    // a small part of the picture gets a family over its own part (PrimaryTracer).
     CertifiedRayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
-                       const Vec3& center, double radius, int width, int height);
+                       const Vec3& center, double radius, const ImageRect& rect);
 
     // False when no finite bound could be had (overflow; a coefficient of f outside the normal
     // doubles): every ray is then traced alone.
@@ -48,7 +57,8 @@ class CertifiedRayFamily {
         std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> by_u;
     };
     void expand_row(double y, Row& out) const;
-    // The ball of the primary ray through (x, y) on the row expanded at y.
+    // The ball of the primary ray through (x, y) on the row expanded at y; (x, y) in the
+    // family's rectangle.
     void ball_at(const Row& row, double x, BernsteinBall& out) const;
 
   private:

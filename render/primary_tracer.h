@@ -29,6 +29,7 @@ class PrimaryTracer {
         RayRestriction restriction;
         BernsteinBall ball;
         double previous_hit = 0.0;
+        double image_y = 0.0;
     };
     void begin_row(double image_y, Row& row) const;
     // The first hit of camera.ray(image_x, image_y) (image_y as in begin_row) in `interval`.
@@ -41,6 +42,7 @@ class PrimaryTracer {
     Family family_ = Family::none;
     std::unique_ptr<RayFamily> floating_;
     std::unique_ptr<CertifiedRayFamily> certified_;
+    ImageRect rect_;  // the image points the certified family serves
 };
 
 }  // namespace locus::render

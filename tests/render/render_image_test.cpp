@@ -159,3 +159,41 @@ TEST(Srgb8, TheTableEncodesAsTheTransferFunction) {
 
 }  // namespace
 }  // namespace locus::render
+
+namespace locus::render {
+namespace {
+
+TEST(Render, ACertifiedFamilyOverPartOfTheImageAgreesWithExactArithmetic) {
+    // A torus clipped to a small sphere off the image's centre: the certified ray family spans
+    // only the clip region's footprint (PrimaryTracer), and its balls must still hold for every
+    // pixel there. Exact arithmetic on each ray (the `exact` method) is the oracle.
+    Scene scene;
+    scene.width = 64;
+    scene.height = 48;
+    scene.camera = CameraSpec{{2.4, -3.2, 2.0}, {0.3, 0.0, 0.0}, {0.0, 0.0, 1.0}, 30.0};
+    scene.options.shadows = false;
+    scene.options.threads = 2;
+    scene.surfaces.push_back(
+        {"(x^2+y^2+z^2+3/4)^2-4*(x^2+y^2)", "", ClipSphere{{0.9, 0.3, 0.1}, 0.7}, Material{}, ""});
+    const std::vector<algebra::CompiledPolynomial> f = {
+        algebra::compile_surface(scene.surfaces[0].equation)};
+    ExecutionSettings execution;
+    execution.aovs = true;
+    RenderStats certified_stats, exact_stats;
+    const RenderedImage certified = render(scene, f, execution, &certified_stats);
+    scene.options.method = TraceMethod::exact;
+    const RenderedImage exact = render(scene, f, execution, &exact_stats);
+    EXPECT_GT(exact_stats.hits, 64 * 48 / 20);
+    EXPECT_LT(exact_stats.hits, 64 * 48 / 2);  // a part of the picture
+    EXPECT_EQ(certified_stats.unknown, 0);
+    for (std::size_t i = 0; i < exact.depth.size(); ++i) {
+        ASSERT_EQ(std::isfinite(certified.depth[i]), std::isfinite(exact.depth[i]))
+            << "pixel " << i;
+        if (std::isfinite(exact.depth[i])) {
+            EXPECT_NEAR(certified.depth[i], exact.depth[i], 1e-6 * exact.depth[i]) << "pixel " << i;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace locus::render
