@@ -91,10 +91,15 @@ bool PatchTrim::in_domain(double s, double t) const {
 }
 
 // Gauss–Newton on |P(s,t)/W − p|² from (s, t), with a Levenberg term for rank-deficient
-// Jacobians (a collapsed edge).
-PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t) const {
+// Jacobians (a collapsed edge). Stops once the distance is at most `close_enough` (then (s, t)
+// is within about that distance over the Jacobian's size of the preimage).
+PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t,
+                                      double close_enough) const {
     Preimage best;
-    for (int i = 0; i < kIterations; ++i) {
+    // Iterations in a row whose linear model cannot close even half the distance: p is off
+    // the patch there (the residual is normal to the patch), and the search stops.
+    int stalled = 0;
+    for (int i = 0; i < kIterations && stalled < 3; ++i) {
         const Value m = evaluate(s, t, true);
         const Vec3 r = m.point - p;
         const double distance = glm::length(r);
@@ -104,6 +109,9 @@ PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t) const {
             }
         } else {
             best = {s, t, distance};
+            if (distance <= close_enough) {
+                break;
+            }
         }
         const double a = glm::dot(m.ds, m.ds), b = glm::dot(m.ds, m.dt), c = glm::dot(m.dt, m.dt);
         const double gs = glm::dot(m.ds, r), gt = glm::dot(m.dt, r);
@@ -114,6 +122,8 @@ PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t) const {
         }
         const double step_s = -((c + damping) * gs - b * gt) / det;
         const double step_t = -((a + damping) * gt - b * gs) / det;
+        const double predicted = glm::length(r + step_s * m.ds + step_t * m.dt);
+        stalled = predicted > 0.5 * distance ? stalled + 1 : 0;
         s += step_s;
         t += step_t;
         if (std::abs(step_s) + std::abs(step_t) < 1e-15) {
@@ -132,23 +142,31 @@ std::vector<PatchTrim::Preimage> PatchTrim::starting_points(const Vec3& p) const
         const double d = glm::length(sample.point - p);
         samples.push_back({sample.s, sample.t, std::isnan(d) ? INFINITY : d});
     }
-    std::sort(samples.begin(), samples.end(),
-              [](const Preimage& a, const Preimage& b) { return a.distance < b.distance; });
+    // The closest sample, then the closest of those far enough from the starts chosen: a few
+    // scans instead of sorting all of them for every hit.
     std::vector<Preimage> starts;
     const double separation = 2.0 / (kSamples - 1.0) - 1e-12;
-    for (const Preimage& sample : samples) {
-        if (starts.size() == kStarts) {
+    while (starts.size() < kStarts) {
+        const Preimage* closest = nullptr;
+        for (const Preimage& sample : samples) {
+            if (!std::isfinite(sample.distance) ||
+                (closest != nullptr && !(sample.distance < closest->distance))) {
+                continue;
+            }
+            bool apart = true;
+            for (const Preimage& start : starts) {
+                apart = apart &&
+                        std::max(std::abs(start.s - sample.s) / (box_.s1 - box_.s0),
+                                 std::abs(start.t - sample.t) / (box_.t1 - box_.t0)) >= separation;
+            }
+            if (apart) {
+                closest = &sample;
+            }
+        }
+        if (closest == nullptr) {
             break;
         }
-        bool apart = std::isfinite(sample.distance);
-        for (const Preimage& start : starts) {
-            apart =
-                apart && std::max(std::abs(start.s - sample.s) / (box_.s1 - box_.s0),
-                                  std::abs(start.t - sample.t) / (box_.t1 - box_.t0)) >= separation;
-        }
-        if (apart) {
-            starts.push_back(sample);
-        }
+        starts.push_back(*closest);
     }
     return starts;
 }
@@ -158,7 +176,8 @@ std::vector<PatchTrim::Preimage> PatchTrim::starting_points(const Vec3& p) const
 PatchTrim::Preimage PatchTrim::find_preimage(const Vec3& p, double good_enough) const {
     Preimage inside, outside;
     for (const Preimage& start : starting_points(p)) {
-        const Preimage found = refine(p, start.s, start.t);
+        // Refined well past good_enough, so that (s, t) is accurate for the domain test.
+        const Preimage found = refine(p, start.s, start.t, 1e-3 * good_enough);
         Preimage& slot = in_domain(found.s, found.t) ? inside : outside;
         if (found.distance < slot.distance) {
             slot = found;
