@@ -33,6 +33,7 @@
 #include "bench/surface_suite.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
+#include "cli/patch_surfaces.h"
 #include "render/primary_rays.h"
 #include "render/renderer.h"
 #include "render/scene.h"
@@ -187,12 +188,92 @@ std::vector<double> shade_image(const algebra::CompiledPolynomial& f, const rend
     return shade;
 }
 
+// The teapot's 32 trimmed patches (implicit/teapot.bpt), the view of docs/rendering.md at
+// size×size: whole frames as `locus render` makes them without shadows, timed by median. Exact
+// arithmetic on every ray of 32 surfaces of degree 9–18 would take hours, so the certified
+// method is the reference here; a pixel of another method is wrong when it hits where the
+// reference misses or the other way round, or when its depth differs by more than 1e-6 × the
+// teapot's size.
+// surf cannot draw trimmed patches: there is no reference beside them.
+void run_patch_bench(const RenderBenchArgs& args, const std::vector<render::TraceMethod>& methods) {
+    const std::string path = args.suite.data_dir + "/implicit/teapot.bpt";
+    render::Scene scene;
+    scene.surfaces = cli::patch_surfaces(path, read_input(path), std::nullopt);
+    scene.width = scene.height = args.size;
+    scene.camera = render::CameraSpec{{0.0, -7.5, 5.0}, {0.0, 0.0, 1.3}, {0.0, 0.0, 1.0}, 35.0};
+    scene.options.shadows = false;
+    std::vector<algebra::CompiledPolynomial> compiled;
+    int degree = 0;
+    for (const render::Surface& surface : scene.surfaces) {
+        compiled.push_back(algebra::compile_surface(surface.equation));
+        degree = std::max(degree, compiled.back().degree());
+    }
+    render::ExecutionSettings execution;
+    execution.threads = args.threads;
+    // The median of frames repeated until --min-seconds have passed (three at least).
+    auto frame = [&](render::TraceMethod method, render::RenderedImage& image) {
+        scene.options.method = method;
+        std::vector<double> seconds;
+        double total = 0.0;
+        while (seconds.size() < 3 || (total < args.suite.min_seconds && seconds.size() < 50)) {
+            render::RenderStats stats;
+            image = render::render(scene, compiled, execution, &stats);
+            seconds.push_back(stats.seconds);
+            total += stats.seconds;
+        }
+        std::sort(seconds.begin(), seconds.end());
+        return seconds[seconds.size() / 2];
+    };
+    render::RenderedImage reference;
+    const double reference_seconds = frame(render::TraceMethod::certified, reference);
+    const double tolerance = 1e-6 * 3.5;  // the teapot spans about 6.4 × 4 × 3.2
+    const double rays = static_cast<double>(reference.depth.size());
+    for (const render::TraceMethod method : methods) {
+        render::RenderedImage image;
+        const double seconds =
+            method == render::TraceMethod::certified ? reference_seconds : frame(method, image);
+        const render::RenderedImage& traced =
+            method == render::TraceMethod::certified ? reference : image;
+        long wrong = 0;
+        double max_error = 0.0;
+        for (std::size_t p = 0; p < traced.depth.size(); ++p) {
+            const bool hit = std::isfinite(traced.depth[p]);
+            if (hit != std::isfinite(reference.depth[p])) {
+                ++wrong;
+            } else if (hit) {
+                const double error = std::abs(traced.depth[p] - reference.depth[p]);
+                max_error = std::max(max_error, error);
+                wrong += error > tolerance;
+            }
+        }
+        if (args.suite.csv) {
+            std::cout << "teapot," << degree << "," << render::to_string(method) << ",patches,"
+                      << tolerance << "," << traced.depth.size() << "," << seconds << ","
+                      << rays / seconds << ",," << wrong << "," << wrong / rays << ",0,"
+                      << max_error << ",,," << seconds << ",,,\n";
+        } else {
+            std::printf("%-18s %3d %-25s %10.0f %9s %8ld %8.3f %11.2e %11s %7s %9.4f %9s %6s %6s\n",
+                        "teapot (32 patches)", degree,
+                        std::string(render::to_string(method)).c_str(), rays / seconds, "-", wrong,
+                        100.0 * wrong / rays, max_error, "-", "-", seconds, "-", "-", "-");
+        }
+        std::cout.flush();
+    }
+}
+
 int run_render_bench(const RenderBenchArgs& args) {
     check_suite_options(args.suite);
     std::vector<SuiteSurface> suite = read_suite(args.suite.data_dir + "/surfaces/SUITE.txt");
+    // "teapot" names the patch case, which is not in the surface suite.
+    const bool teapot = args.suite.cases.empty() ||
+                        std::find(args.suite.cases.begin(), args.suite.cases.end(), "teapot") !=
+                            args.suite.cases.end();
     if (!args.suite.cases.empty()) {
         std::vector<SuiteSurface> chosen;
         for (const std::string& name : args.suite.cases) {
+            if (name == "teapot") {
+                continue;
+            }
             const auto it = std::find_if(suite.begin(), suite.end(),
                                          [&](const SuiteSurface& s) { return s.name == name; });
             if (it == suite.end()) {
@@ -337,6 +418,9 @@ int run_render_bench(const RenderBenchArgs& args) {
             }
             std::cout.flush();
         }
+    }
+    if (teapot) {
+        run_patch_bench(args, methods);
     }
     if (!with_surf && args.surf != "off") {
         std::fprintf(stderr, "surf not found: no surf column (install Debian's surf-alggeo)\n");
