@@ -133,51 +133,45 @@ PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t,
     return best;
 }
 
-// Starting points: the domain samples closest to p, at least two sample steps apart, so that
-// every fold of a patch that passes near p gets a start of its own.
-std::vector<PatchTrim::Preimage> PatchTrim::starting_points(const Vec3& p) const {
-    std::vector<Preimage> samples;
-    samples.reserve(samples_.size());
-    for (const Sample& sample : samples_) {
-        const double d = glm::length(sample.point - p);
-        samples.push_back({sample.s, sample.t, std::isnan(d) ? INFINITY : d});
+// The preimage in the domain closest to p among those refined from the starting points, or the
+// closest outside it when none is inside; `good_enough` stops the search early. The starting
+// points are the domain samples closest to p, at least two sample steps apart, so that every
+// fold of a patch that passes near p gets a start of its own; each is chosen only when the
+// ones before have not found a preimage good enough (usually the first does).
+PatchTrim::Preimage PatchTrim::find_preimage(const Vec3& p, double good_enough) const {
+    std::array<double, kSamples * kSamples> distance;
+    const std::size_t count = samples_.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const double d = glm::length(samples_[i].point - p);
+        distance[i] = std::isnan(d) ? INFINITY : d;
     }
-    // The closest sample, then the closest of those far enough from the starts chosen: a few
-    // scans instead of sorting all of them for every hit.
-    std::vector<Preimage> starts;
     const double separation = 2.0 / (kSamples - 1.0) - 1e-12;
-    while (starts.size() < kStarts) {
-        const Preimage* closest = nullptr;
-        for (const Preimage& sample : samples) {
-            if (!std::isfinite(sample.distance) ||
-                (closest != nullptr && !(sample.distance < closest->distance))) {
+    std::array<std::size_t, kStarts> starts;
+    std::size_t chosen = 0;
+    Preimage inside, outside;
+    while (chosen < kStarts) {
+        std::size_t next = count;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!std::isfinite(distance[i]) || (next < count && !(distance[i] < distance[next]))) {
                 continue;
             }
             bool apart = true;
-            for (const Preimage& start : starts) {
-                apart = apart &&
-                        std::max(std::abs(start.s - sample.s) / (box_.s1 - box_.s0),
-                                 std::abs(start.t - sample.t) / (box_.t1 - box_.t0)) >= separation;
+            for (std::size_t k = 0; k < chosen && apart; ++k) {
+                const Sample& start = samples_[starts[k]];
+                apart =
+                    std::max(std::abs(start.s - samples_[i].s) / (box_.s1 - box_.s0),
+                             std::abs(start.t - samples_[i].t) / (box_.t1 - box_.t0)) >= separation;
             }
             if (apart) {
-                closest = &sample;
+                next = i;
             }
         }
-        if (closest == nullptr) {
+        if (next == count) {
             break;
         }
-        starts.push_back(*closest);
-    }
-    return starts;
-}
-
-// The preimage in the domain closest to p among those refined from the starting points, or the
-// closest outside it when none is inside; `good_enough` stops the search early.
-PatchTrim::Preimage PatchTrim::find_preimage(const Vec3& p, double good_enough) const {
-    Preimage inside, outside;
-    for (const Preimage& start : starting_points(p)) {
+        starts[chosen++] = next;
         // Refined well past good_enough, so that (s, t) is accurate for the domain test.
-        const Preimage found = refine(p, start.s, start.t, 1e-3 * good_enough);
+        const Preimage found = refine(p, samples_[next].s, samples_[next].t, 1e-3 * good_enough);
         Preimage& slot = in_domain(found.s, found.t) ? inside : outside;
         if (found.distance < slot.distance) {
             slot = found;

@@ -71,7 +71,6 @@ class PatchTrim {
     Value evaluate(double s, double t, bool derivatives) const;
     bool in_domain(double s, double t) const;
     Preimage refine(const Vec3& p, double s, double t, double close_enough) const;
-    std::vector<Preimage> starting_points(const Vec3& p) const;
     Preimage find_preimage(const Vec3& p, double good_enough) const;
 
     std::array<std::vector<BivariateTerm>, 4> map_;
