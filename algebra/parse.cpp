@@ -1,6 +1,10 @@
 #include "algebra/parse.h"
 
+#include <flint/fmpz.h>
+#include <flint/ulong_extras.h>
+
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
@@ -581,6 +585,52 @@ std::vector<SourceLine> split_lines(std::string_view text) {
     }
 }
 
+namespace {
+
+// `characteristic:`'s value, or msolve's second line: 0 or a prime below 2³¹.
+std::uint32_t parse_characteristic(std::string_view value, std::size_t line, std::size_t column) {
+    std::size_t lead = 0;
+    const std::string_view digits = trim(value, &lead);
+    const std::string expected = "the characteristic: 0 or a prime below 2^31";
+    if (digits.empty()) {
+        throw ParseError(line, column + lead, expected, "nothing");
+    }
+    std::uint64_t p = 0;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(digits[i]))) {
+            throw ParseError(line, column + lead + i, expected,
+                             "'" + std::string(digits.substr(i, 12)) + "'");
+        }
+        p = p * 10 + static_cast<std::uint64_t>(digits[i] - '0');
+        if (p >= (std::uint64_t{1} << 31)) {
+            throw ParseError(line, column + lead, expected, "a number of 2^31 or more");
+        }
+    }
+    if (p != 0 && !n_is_prime(p)) {
+        throw ParseError(line, column + lead, expected, std::to_string(p) + ", not a prime");
+    }
+    return static_cast<std::uint32_t>(p);
+}
+
+// In characteristic p, a coefficient stands for its residue: refuses a denominator divisible
+// by p (1/5 in characteristic 5 has no residue), at the generator's position.
+void check_residues(const Polynomial& f, std::uint32_t p, std::size_t line, std::size_t column) {
+    if (p == 0) {
+        return;
+    }
+    for (std::size_t i = 0; i < f.num_terms(); ++i) {
+        if (fmpz_fdiv_ui(fmpq_denref(f.coefficient(i).get()), p) == 0) {
+            throw ParseError(line, column,
+                             "coefficients whose denominators are not divisible by the "
+                             "characteristic " +
+                                 std::to_string(p),
+                             f.coefficient(i).to_string());
+        }
+    }
+}
+
+}  // namespace
+
 IdealFile parse_ideal_file(std::string_view text) {
     IdealFile file;
     std::vector<std::string> names;
@@ -618,8 +668,11 @@ IdealFile parse_ideal_file(std::string_view text) {
                 order_text = std::string(value);
                 order_line = line_number;
                 order_column = value_column;
+            } else if (key == "characteristic") {
+                file.characteristic = parse_characteristic(value, line_number, value_column);
             } else {
-                throw ParseError(line_number, lead + 1, "'vars:', 'order:' or a generator",
+                throw ParseError(line_number, lead + 1,
+                                 "'vars:', 'order:', 'characteristic:' or a generator",
                                  "'" + std::string(key) + ":'");
             }
         } else {
@@ -639,12 +692,96 @@ IdealFile parse_ideal_file(std::string_view text) {
     file.ring = PolyRing::make(names, std::move(order));
     for (const auto& g : generator_lines) {
         Polynomial p = parse_polynomial(g.text, file.ring, g.line, g.column);
+        check_residues(p, file.characteristic, g.line, g.column);
         if (!p.is_zero()) {
             file.generators.push_back(std::move(p));
             file.generator_lines.push_back(g.line);
         }
     }
     return file;
+}
+
+IdealFile parse_msolve_file(std::string_view text) {
+    IdealFile file;
+    // The positions of the first two non-blank lines, then the rest of the text.
+    std::size_t pos = 0, line = 1;
+    std::array<std::pair<std::string_view, std::size_t>, 2> header{};
+    for (auto& [content, number] : header) {
+        while (true) {
+            if (pos >= text.size()) {
+                throw ParseError(line, 1,
+                                 &content == &header[0].first ? "the variables (msolve format)"
+                                                              : "the characteristic",
+                                 "end of input");
+            }
+            const std::size_t eol = std::min(text.find('\n', pos), text.size());
+            const std::string_view this_line = text.substr(pos, eol - pos);
+            pos = eol + 1;
+            ++line;
+            if (!trim(this_line).empty()) {
+                content = this_line;
+                number = line - 1;
+                break;
+            }
+        }
+    }
+    const std::vector<std::string> names = parse_name_list(header[0].first, header[0].second, 1);
+    file.characteristic = parse_characteristic(header[1].first, header[1].second, 1);
+    file.ring = PolyRing::make(names, MonomialOrder::grevlex(names.size()));
+    // The polynomials: pieces between commas, each parsed where it starts.
+    std::size_t piece_start = std::min(pos, text.size()), piece_line = line, piece_column = 1;
+    std::size_t column = 1;
+    bool any = false;
+    const auto finish_piece = [&](std::size_t end, bool last) {
+        const std::string_view piece = text.substr(piece_start, end - piece_start);
+        if (trim(piece).empty()) {
+            if (last && !any) {
+                throw ParseError(piece_line, piece_column, "a polynomial after the characteristic",
+                                 "end of input");
+            }
+            throw ParseError(piece_line, piece_column, "a polynomial",
+                             last ? "end of input" : "','");
+        }
+        Polynomial p = parse_polynomial(piece, file.ring, piece_line, piece_column);
+        check_residues(p, file.characteristic, piece_line, piece_column);
+        if (!p.is_zero()) {
+            file.generators.push_back(std::move(p));
+            file.generator_lines.push_back(piece_line);
+        }
+        any = true;
+    };
+    for (std::size_t i = piece_start; i < text.size(); ++i) {
+        if (text[i] == ',') {
+            finish_piece(i, false);
+            piece_start = i + 1;
+            piece_line = line;
+            piece_column = column + 1;
+        }
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    finish_piece(text.size(), true);
+    return file;
+}
+
+bool looks_like_msolve(std::string_view text) {
+    std::array<std::string_view, 2> first{};
+    std::size_t found = 0, pos = 0;
+    while (found < 2 && pos < text.size()) {
+        const std::size_t eol = std::min(text.find('\n', pos), text.size());
+        const std::string_view line = trim(text.substr(pos, eol - pos));
+        pos = eol + 1;
+        if (!line.empty()) {
+            first[found++] = line;
+        }
+    }
+    return found == 2 && first[0].find(':') == std::string_view::npos &&
+           std::all_of(first[1].begin(), first[1].end(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 
 }  // namespace locus::algebra

@@ -6,6 +6,7 @@
 // line and column (1-based) point at the offending character and which says what was expected.
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -61,14 +62,33 @@ struct IdealFile {
     RingPtr ring;
     std::vector<Polynomial> generators;
     std::vector<std::size_t> generator_lines;
+    // 0: the ideal is over Q. A prime p < 2³¹: over GF(p); the generators are still stored
+    // over Q (their coefficients stand for their residues: no denominator is divisible by p),
+    // and only modular code may compute with them.
+    std::uint32_t characteristic = 0;
 };
 
 // `vars:` is required before the first generator; `order:` is optional (default grevlex);
-// `#` starts a comment. Example:
+// `characteristic:` is optional (default 0: over Q; a prime below 2³¹: over GF(p)); `#` starts
+// a comment. Example:
 //     vars: x,y,z
 //     order: lex
+//     characteristic: 32003
 //     x^2+y^2+z^2-1
 IdealFile parse_ideal_file(std::string_view text);
+
+// msolve's input format (`.ms`): the variables on the first line (comma-separated), the
+// characteristic on the second (0 or a prime below 2³¹), then the polynomials separated by
+// commas over any number of lines. The ring is grevlex in the variables' order. Example:
+//     x,y,z
+//     0
+//     x^2+y^2+z^2-1,
+//     x*y-z
+IdealFile parse_msolve_file(std::string_view text);
+
+// Does the text look like msolve's format rather than an ideal file (its first non-blank line
+// has no ':' and its second non-blank line is a number)?
+bool looks_like_msolve(std::string_view text);
 
 // One line of a line-oriented file (ideal and parametrization files): its text with any `#`
 // comment removed, and its 1-based number. Every line is returned, blank ones included, so the

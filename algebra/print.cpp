@@ -19,8 +19,11 @@ OutputFormat parse_output_format(std::string_view name) {
     if (name == "latex") {
         return OutputFormat::latex;
     }
+    if (name == "msolve") {
+        return OutputFormat::msolve;
+    }
     throw InputError("--format " + std::string(name),
-                     "expected normalized, singular, macaulay2 or latex");
+                     "expected normalized, singular, macaulay2, latex or msolve");
 }
 
 namespace {
@@ -124,7 +127,7 @@ std::string variable_list(const PolyRing& ring, const BlockLayout& b) {
     return s;
 }
 
-std::string macaulay2_ring(const PolyRing& ring) {
+std::string macaulay2_ring(const PolyRing& ring, std::uint32_t characteristic) {
     const BlockLayout b = block_layout(ring);
     const auto& order = ring.order();
     std::string mo;
@@ -159,7 +162,8 @@ std::string macaulay2_ring(const PolyRing& ring) {
         break;
     }
     }
-    return "R = QQ[" + variable_list(ring, b) + ", MonomialOrder => " + mo + "];";
+    const std::string field = characteristic == 0 ? "QQ" : "ZZ/" + std::to_string(characteristic);
+    return "R = " + field + "[" + variable_list(ring, b) + ", MonomialOrder => " + mo + "];";
 }
 
 }  // namespace
@@ -227,7 +231,8 @@ std::vector<Polynomial> normalize_basis(std::vector<Polynomial> basis) {
     return out;
 }
 
-std::string singular_ring(const PolyRing& ring, std::string_view ring_name) {
+std::string singular_ring(const PolyRing& ring, std::string_view ring_name,
+                          std::uint32_t characteristic) {
     const BlockLayout b = block_layout(ring);
     const auto& order = ring.order();
     std::string o;
@@ -262,11 +267,13 @@ std::string singular_ring(const PolyRing& ring, std::string_view ring_name) {
         break;
     }
     }
-    return "ring " + std::string(ring_name) + " = 0, (" + variable_list(ring, b) + "), " + o + ";";
+    return "ring " + std::string(ring_name) + " = " + std::to_string(characteristic) + ", (" +
+           variable_list(ring, b) + "), " + o + ";";
 }
 
 std::string format_polynomials(std::span<const Polynomial> polys, const PolyRing& ring,
-                               OutputFormat format, std::string_view ideal_name) {
+                               OutputFormat format, std::string_view ideal_name,
+                               std::uint32_t characteristic) {
     std::string out;
     switch (format) {
     case OutputFormat::normalized:
@@ -276,7 +283,8 @@ std::string format_polynomials(std::span<const Polynomial> polys, const PolyRing
         }
         return out;
     case OutputFormat::singular:
-        out = singular_ring(ring) + "\nideal " + std::string(ideal_name) + " =";
+        out =
+            singular_ring(ring, "r", characteristic) + "\nideal " + std::string(ideal_name) + " =";
         for (std::size_t i = 0; i < polys.size(); ++i) {
             out += (i ? ",\n  " : "\n  ") + to_string(polys[i]);
         }
@@ -285,7 +293,7 @@ std::string format_polynomials(std::span<const Polynomial> polys, const PolyRing
         }
         return out + ";\n";
     case OutputFormat::macaulay2:
-        out = macaulay2_ring(ring) + "\n" + std::string(ideal_name) + " = ideal(";
+        out = macaulay2_ring(ring, characteristic) + "\n" + std::string(ideal_name) + " = ideal(";
         for (std::size_t i = 0; i < polys.size(); ++i) {
             out += (i ? ",\n  " : "\n  ") + to_string(polys[i]);
         }
@@ -293,16 +301,32 @@ std::string format_polynomials(std::span<const Polynomial> polys, const PolyRing
             out += "0_R";
         }
         return out + ")\n";
+    case OutputFormat::msolve:
+        for (std::size_t i = 0; i < ring.num_vars(); ++i) {
+            out += (i ? "," : "") + ring.variable_name(i);
+        }
+        out += "\n" + std::to_string(characteristic) + "\n";
+        for (std::size_t i = 0; i < polys.size(); ++i) {
+            out += to_string(polys[i]) + (i + 1 < polys.size() ? ",\n" : "\n");
+        }
+        if (polys.empty()) {
+            out += "0\n";
+        }
+        return out;
     }
     return out;
 }
 
-std::string to_ideal_file(std::span<const Polynomial> generators, const PolyRing& ring) {
+std::string to_ideal_file(std::span<const Polynomial> generators, const PolyRing& ring,
+                          std::uint32_t characteristic) {
     std::string out = "vars: ";
     for (std::size_t i = 0; i < ring.num_vars(); ++i) {
         out += (i ? "," : "") + ring.variable_name(i);
     }
     out += "\norder: " + ring.order().to_string(ring.variable_names()) + "\n";
+    if (characteristic != 0) {
+        out += "characteristic: " + std::to_string(characteristic) + "\n";
+    }
     for (const auto& g : generators) {
         out += to_string(g) + "\n";
     }

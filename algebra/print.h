@@ -8,6 +8,7 @@
 // by line.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -17,9 +18,9 @@
 
 namespace locus::algebra {
 
-enum class OutputFormat { normalized, singular, macaulay2, latex };
+enum class OutputFormat { normalized, singular, macaulay2, latex, msolve };
 
-// Throws InputError for a name other than normalized, singular, macaulay2, latex.
+// Throws InputError for a name other than normalized, singular, macaulay2, latex, msolve.
 OutputFormat parse_output_format(std::string_view name);
 
 std::string to_string(const Polynomial& f);
@@ -30,15 +31,23 @@ std::vector<Polynomial> normalize_basis(std::vector<Polynomial> basis);
 
 // A basis (or any list of polynomials) in `format`: normalized and latex print one polynomial a
 // line; singular and macaulay2 print a ring declaration and an ideal that can be pasted into
-// those systems as they are.
+// those systems as they are; msolve prints msolve's input format (variables, characteristic,
+// the polynomials separated by commas; msolve reads it as grevlex in the variables' order,
+// the same ideal whatever order the basis was computed for). `characteristic` p ≠ 0: the
+// coefficients are residues modulo p (printed in [0, p)), and the rings say so (`ring r = p`,
+// `ZZ/p`).
 std::string format_polynomials(std::span<const Polynomial> polys, const PolyRing& ring,
-                               OutputFormat format, std::string_view ideal_name = "G");
+                               OutputFormat format, std::string_view ideal_name = "G",
+                               std::uint32_t characteristic = 0);
 
 // The ring declaration in Singular's language (`ring r = 0, (x,y,z), dp;`), with variables
 // reordered into blocks where the order needs it (elim of non-leading variables).
-std::string singular_ring(const PolyRing& ring, std::string_view ring_name = "r");
+std::string singular_ring(const PolyRing& ring, std::string_view ring_name = "r",
+                          std::uint32_t characteristic = 0);
 
-// An ideal file that parse_ideal_file reads back to the same ring and generators.
-std::string to_ideal_file(std::span<const Polynomial> generators, const PolyRing& ring);
+// An ideal file that parse_ideal_file reads back to the same ring, generators and
+// characteristic.
+std::string to_ideal_file(std::span<const Polynomial> generators, const PolyRing& ring,
+                          std::uint32_t characteristic = 0);
 
 }  // namespace locus::algebra

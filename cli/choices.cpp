@@ -62,6 +62,7 @@ const std::vector<Choice>& output_format_choices() {
         {"singular", "a ring and an ideal to paste into Singular"},
         {"macaulay2", "the same for Macaulay2"},
         {"latex", "one polynomial a line, in LaTeX"},
+        {"msolve", "msolve's input format: variables, characteristic, polynomials"},
     };
     return choices;
 }

@@ -116,7 +116,10 @@ algebra::IdealFile read_ideal(const std::string& path,
     const std::string name = path == "-" ? "<stdin>" : path;
     algebra::IdealFile file;
     try {
-        file = algebra::parse_ideal_file(text);
+        // msolve's format by its extension, or on standard input by its shape.
+        const bool msolve =
+            path.ends_with(".ms") || (path == "-" && algebra::looks_like_msolve(text));
+        file = msolve ? algebra::parse_msolve_file(text) : algebra::parse_ideal_file(text);
     } catch (const Error& e) {  // ParseError, InputError, ExponentOverflow, ResourceLimit
         throw failure_about(name, e);
     }

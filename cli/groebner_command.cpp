@@ -25,7 +25,7 @@ struct GroebnerArgs {
     std::string format = "normalized";
     std::string selection = "auto";
     std::string algorithm = "auto";
-    std::uint32_t prime = 2147483647u;  // 2³¹ − 1, for --algorithm f4
+    std::optional<std::uint32_t> prime;  // for --algorithm f4 (default 2³¹ − 1)
     bool no_certify = false;
     bool stats = false;
     bool check = false;
@@ -84,6 +84,68 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
                  s.reductions, s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
 }
 
+// The reduced basis over GF(p), computed there directly by the modular F4 (nothing is lifted,
+// so nothing needs certifying): for an ideal file of characteristic p, or for --algorithm f4
+// with --prime p on any file (the basis of its reduction modulo p). Coefficients in [0, p).
+int run_groebner_modulo(const GroebnerArgs& args, const algebra::IdealFile& ideal,
+                        algebra::OutputFormat format, const Deadline& deadline) {
+    const std::uint32_t file_p = ideal.characteristic;
+    if (file_p != 0 && args.algorithm != "auto" && args.algorithm != "f4") {
+        throw CommandFailure(exit_input, "--algorithm " + args.algorithm +
+                                             " computes over Q, and the input has characteristic " +
+                                             std::to_string(file_p) + ": use auto or f4");
+    }
+    if (file_p != 0 && args.prime && *args.prime != file_p) {
+        throw CommandFailure(exit_input, "--prime " + std::to_string(*args.prime) +
+                                             ": the input has characteristic " +
+                                             std::to_string(file_p));
+    }
+    const std::uint32_t p = file_p != 0 ? file_p : args.prime.value_or(2147483647u);
+    algebra::modular::F4Options f4_options;
+    f4_options.deadline = deadline;
+    algebra::modular::F4Stats f4_stats;
+    std::vector<algebra::Polynomial> basis;
+    try {
+        basis = algebra::groebner_modulo(ideal.generators, p, f4_options, &f4_stats);
+    } catch (const Timeout&) {
+        throw CommandFailure(exit_timeout,
+                             "timeout: F4 stopped after " + timeout_text(args.limits));
+    } catch (const InputError& e) {
+        throw CommandFailure(exit_input, e.what());
+    }
+    std::cout << algebra::format_polynomials(basis, *ideal.ring, format, "G", p);
+    std::cout.flush();
+    if (args.stats) {
+        std::fprintf(stderr,
+                     "basis over GF(%u), computed there (no lifting): %zu elements, %zu F4 steps, "
+                     "largest matrix %zu x %zu, symbolic %.6f s, linear algebra %.6f s\n",
+                     p, basis.size(), f4_stats.steps, f4_stats.largest_rows,
+                     f4_stats.largest_columns, f4_stats.symbolic_seconds,
+                     f4_stats.linear_algebra_seconds);
+    }
+    if (args.check) {
+        algebra::BasisCheck check;
+        try {
+            check = algebra::check_groebner_basis_modulo(basis, ideal.generators, p,
+                                                         f4_options.deadline);
+        } catch (const Timeout&) {
+            throw CommandFailure(exit_timeout,
+                                 "timeout: the check stopped after " + timeout_text(args.limits));
+        }
+        if (!check.ok) {
+            throw CommandFailure(exit_check_failed, "check: FAILED: " + check.failure);
+        }
+        if (!algebra::is_reduced(basis)) {
+            throw CommandFailure(exit_check_failed, "check: FAILED: the basis is not reduced");
+        }
+        std::fprintf(stderr,
+                     "check: ok modulo %u (%zu generators and %zu S-pairs reduce to zero; the "
+                     "basis is reduced)\n",
+                     p, check.generators_checked, check.pairs_checked);
+    }
+    return exit_ok;
+}
+
 int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = [&] {
@@ -111,30 +173,8 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     options.threads = args.threads > 0
                           ? args.threads
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    if (args.algorithm == "f4") {
-        // The reduced basis over Z/pZ, coefficients printed in [0, p).
-        algebra::modular::F4Options f4_options;
-        f4_options.deadline = options.deadline;
-        algebra::modular::F4Stats f4_stats;
-        std::vector<algebra::Polynomial> basis;
-        try {
-            basis = algebra::groebner_modulo(ideal.generators, args.prime, f4_options, &f4_stats);
-        } catch (const Timeout&) {
-            throw CommandFailure(exit_timeout,
-                                 "timeout: F4 stopped after " + timeout_text(args.limits));
-        } catch (const InputError& e) {
-            throw CommandFailure(exit_input, e.what());
-        }
-        std::cout << algebra::format_polynomials(basis, *ideal.ring, format);
-        if (args.stats) {
-            std::fprintf(stderr,
-                         "basis modulo %u: %zu elements, %zu F4 steps, largest matrix %zu x %zu, "
-                         "symbolic %.6f s, linear algebra %.6f s\n",
-                         args.prime, basis.size(), f4_stats.steps, f4_stats.largest_rows,
-                         f4_stats.largest_columns, f4_stats.symbolic_seconds,
-                         f4_stats.linear_algebra_seconds);
-        }
-        return exit_ok;
+    if (ideal.characteristic != 0 || args.algorithm == "f4") {
+        return run_groebner_modulo(args, ideal, format, deadline);
     }
     algebra::GroebnerResult result;
     algebra::ModularStats modular_stats;
@@ -208,7 +248,9 @@ void add_groebner_command(CLI::App& app, CommandContext& context) {
     auto args = std::make_shared<GroebnerArgs>();
     CLI::App* cmd = app.add_subcommand(
         "groebner", "Reduced Gröbner basis of an ideal file, one polynomial a line");
-    cmd->add_option("file", args->file, "ideal file (- for standard input)")->required();
+    cmd->add_option("file", args->file,
+                    "ideal file, or msolve's format (.ms); - for standard input")
+        ->required();
     cmd->add_option("--order", args->order,
                     "override the file's order: lex, grlex, grevlex, weights(..), elim(..), "
                     "matrix(..)");
@@ -222,10 +264,12 @@ void add_groebner_command(CLI::App& app, CommandContext& context) {
                  "under others, then modular"},
                 {"buchberger", ""},
                 {"signature", "signature-based, over Q"},
-                {"f4", "the basis modulo --prime"},
+                {"f4", "the basis modulo --prime (the input's characteristic when it has one)"},
                 {"modular", "multi-modular F4 over Q, certified"}},
                "the algorithm");
-    cmd->add_option("--prime", args->prime, "the prime below 2^31 of --algorithm f4 (2147483647)");
+    cmd->add_option("--prime", args->prime,
+                    "the prime below 2^31 of --algorithm f4 (2147483647); an input with a "
+                    "characteristic computes modulo that one");
     cmd->add_flag("--no-certify", args->no_certify,
                   "modular: skip the exact certification (the result is then probabilistic)");
     cmd->add_flag("--stats", args->stats, "print statistics to standard error");

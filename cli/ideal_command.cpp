@@ -25,10 +25,21 @@ struct IdealArgs {
     ProcessLimitArgs limits;
 };
 
+// The ideal operations compute over Q: an ideal of prime characteristic is refused.
+void require_rationals(const algebra::IdealFile& ideal, const std::string& path) {
+    if (ideal.characteristic != 0) {
+        throw CommandFailure(exit_input, path + ": characteristic " +
+                                             std::to_string(ideal.characteristic) +
+                                             ": the ideal operations compute over Q (locus "
+                                             "groebner computes over GF(p))");
+    }
+}
+
 // The generators of `path`, moved into `ring` (same variable names, any declared order).
 std::vector<algebra::Polynomial> generators_in(const std::string& path,
                                                const algebra::RingPtr& ring) {
     const algebra::IdealFile other = read_ideal(path);
+    require_rationals(other, path);
     std::vector<std::size_t> map;
     for (const auto& name : other.ring->variable_names()) {
         const auto v = ring->variable_index(name);
@@ -70,6 +81,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
                                              "file for one of the two ideals");
     }
     const algebra::IdealFile ideal = read_ideal(args.first, args.order);
+    require_rationals(ideal, args.first);
     const algebra::RingPtr& ring = ideal.ring;
     const auto& gens = ideal.generators;
     if (gens.empty()) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -52,6 +53,17 @@ BasisCheck certify_groebner_basis(
 // Which vector kernels the certification's residue arithmetic runs on this processor:
 // "avx512", "avx2" or "portable".
 const char* certification_kernels();
+
+// The same statement as check_groebner_basis(basis, generators) over GF(p) (p a prime below
+// 2³¹): every generator and every S-pair with non-coprime leading monomials reduces to zero
+// modulo p. Polynomials are stored over Q (IdealFile's convention): each coefficient stands
+// for its residue (no denominator divisible by p); the basis as groebner_modulo returns it,
+// with coefficients in [0, p). The reductions are the division algorithm's top-reductions
+// over Q with every coefficient taken back to [0, p) after each step: nothing of the modular
+// F4 (modular/f4.h) that computes such bases. Throws Timeout once `deadline` passes.
+BasisCheck check_groebner_basis_modulo(
+    std::span<const Polynomial> basis, std::span<const Polynomial> generators, std::uint32_t p,
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 // Monic, and no monomial of any element is divisible by another element's leading monomial.
 bool is_reduced(std::span<const Polynomial> basis);

@@ -106,7 +106,7 @@ TEST(Parse, MalformedIdealFiles) {
         {"vars: x,y\norder: revlex\n", 2, 8, "an order"},
         {"vars: x,y\norder: elim(q)\n", 2, 13, "a declared variable"},
         {"vars: x,y\nx+y\nvars: z\n", 3, 1, "headers come first"},
-        {"vars: x,y\ncolour: red\n", 2, 1, "'vars:', 'order:' or a generator"},
+        {"vars: x,y\ncolour: red\n", 2, 1, "'vars:', 'order:', 'characteristic:' or a generator"},
         {"vars: x,y\nx^2+y\n  x*(y+1\n", 3, 9, "')' to close"},
         {"vars: x,y\nx^2+u\n", 2, 5, "a declared variable"},
     };

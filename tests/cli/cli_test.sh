@@ -40,7 +40,7 @@ expect "negative exponent" 2 "line 2, column 3: expected a non-negative integer 
 expect "empty file" 2 "line 1, column 1: expected a 'vars:' line" -- "$locus" groebner "$tmp/empty.ideal"
 expect "missing file" 2 "cannot open" -- "$locus" groebner "$tmp/nothing.ideal"
 expect "bad --order" 2 "--order" -- "$locus" groebner $known/cyclic4_grevlex.ideal --order 'weights(1)'
-expect "bad --format" 2 "expected normalized, singular, macaulay2 or latex" -- \
+expect "bad --format" 2 "expected normalized, singular, macaulay2, latex or msolve" -- \
     "$locus" groebner $known/cyclic4_grevlex.ideal --format maple
 expect "timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/cyclic6.ideal --timeout 0.05 --algorithm buchberger
 expect "modular timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/katsura9.ideal --timeout 0.2
@@ -50,6 +50,33 @@ expect "dimension counts a box of 12^8 standard monomials at once" 0 "zero-dimen
 expect "modular result is certified" 0 "certified over Q" -- "$locus" groebner bench/data/cyclic6.ideal --algorithm modular --stats
 expect "f4 modulo a prime" 0 "x0+2*x1+2*x2+2*x3+2*x4+65520" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65521
 expect "f4: not a prime" 2 "expected a prime below 2^31" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65520
+# Over GF(p) from the input: a characteristic: line, or msolve's format.
+{ echo "characteristic: 101"; cat bench/data/katsura4.ideal; } >"$tmp/k4p.ideal"
+expect "characteristic p: computed modulo p and checked there" 0 "check: ok modulo 101" -- \
+    "$locus" groebner "$tmp/k4p.ideal" --check
+expect "characteristic p: Singular's ring says so" 0 "ring r = 101, (x0,x1,x2,x3), dp;" -- \
+    "$locus" groebner "$tmp/k4p.ideal" --format singular
+expect "characteristic p: the modular route over Q is refused" 2 "computes over Q" -- \
+    "$locus" groebner "$tmp/k4p.ideal" --algorithm modular
+expect "characteristic p: a different --prime is refused" 2 "the input has characteristic 101" -- \
+    "$locus" groebner "$tmp/k4p.ideal" --prime 103
+expect "characteristic p: ideal operations are refused" 2 "compute over Q" -- \
+    "$locus" ideal dimension "$tmp/k4p.ideal"
+printf 'vars: x\ncharacteristic: 5\nx-2/5\n' >"$tmp/fifth.ideal"
+expect "characteristic 5: 2/5 has no residue" 2 "line 3, column 1: expected coefficients whose denominators" -- \
+    "$locus" groebner "$tmp/fifth.ideal"
+printf 'x,y,z\n32003\nx^2+y^2+z^2-1,\n  x*y-z,\nx-y\n' >"$tmp/three.ms"
+expect "msolve's format in characteristic p" 0 "y^2+32002*z" -- "$locus" groebner "$tmp/three.ms"
+expect "msolve's format out" 0 "" -- bash -c \
+    "\"$locus\" groebner $tmp/three.ms --format msolve | diff - <(printf 'x,y,z\n32003\nx+32002*y,\nz^2+2*z+32002,\ny^2+32002*z\n')"
+expect "msolve's format on standard input, over Q" 0 "x*y-3" -- bash -c \
+    "printf 'x,y\n0\nx^2-1/2*y,\nx*y-3\n' | \"$locus\" groebner -"
+printf 'x,y\n0\nx-1,\n' >"$tmp/trailing.ms"
+expect "msolve: a trailing comma names its place" 2 "line 3, column 5: expected a polynomial" -- \
+    "$locus" groebner "$tmp/trailing.ms"
+printf 'x,y\n12\nx\n' >"$tmp/twelve.ms"
+expect "msolve: a characteristic that is not prime" 2 "line 2, column 1: expected the characteristic" -- \
+    "$locus" groebner "$tmp/twelve.ms"
 expect "unknown algorithm" 2 "expected auto, buchberger, signature, f4 or modular" -- "$locus" groebner bench/data/katsura5.ideal --algorithm magic
 expect "signature algorithm prints the expected basis" 0 "" -- \
     bash -c "\"$locus\" groebner $known/cyclic4_lex.ideal --algorithm signature | diff - $known/cyclic4_lex.expected"

@@ -1,6 +1,6 @@
-// The polynomial and ideal-file parser (algebra/parse.h) on arbitrary bytes: every input is
-// either an ideal or a ParseError/InputError/ResourceLimit (locus::Error); anything else
-// (another exception, a crash, undefined behaviour, a leak) is a bug.
+// The polynomial, ideal-file and msolve-file parsers (algebra/parse.h) on arbitrary bytes: every
+// input is either an ideal or a ParseError/InputError/ResourceLimit (locus::Error); anything
+// else (another exception, a crash, undefined behaviour, a leak) is a bug.
 #include <cstddef>
 #include <cstdint>
 
@@ -13,17 +13,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!text) {
         return 0;
     }
-    try {
-        const locus::algebra::IdealFile file = locus::algebra::parse_ideal_file(*text);
-        if (file.generators.size() != file.generator_lines.size()) {
-            locus::fuzz::property_failed("one line number per generator", *text);
-        }
-        for (const auto& g : file.generators) {
-            if (g.is_zero()) {
-                locus::fuzz::property_failed("zero generators are dropped", *text);
+    for (const auto parse : {locus::algebra::parse_ideal_file, locus::algebra::parse_msolve_file}) {
+        try {
+            const locus::algebra::IdealFile file = parse(*text);
+            if (file.generators.size() != file.generator_lines.size()) {
+                locus::fuzz::property_failed("one line number per generator", *text);
             }
+            for (const auto& g : file.generators) {
+                if (g.is_zero()) {
+                    locus::fuzz::property_failed("zero generators are dropped", *text);
+                }
+            }
+        } catch (const locus::Error&) {
         }
-    } catch (const locus::Error&) {
     }
     return 0;
 }

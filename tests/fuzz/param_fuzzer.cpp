@@ -37,10 +37,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         const auto patches = locus::implicit::parse_bpt(*text);
         for (const auto& patch : patches) {
-            const std::size_t expected =
-                patch.kind == locus::implicit::BezierPatch::Kind::tensor
-                    ? (patch.degree_s + 1) * (patch.degree_t + 1)
-                    : (patch.degree_s + 1) * (patch.degree_s + 2) / 2;
+            const std::size_t expected = patch.kind == locus::implicit::BezierPatch::Kind::tensor
+                                             ? (patch.degree_s + 1) * (patch.degree_t + 1)
+                                             : (patch.degree_s + 1) * (patch.degree_s + 2) / 2;
             if (patch.points.size() != expected) {
                 locus::fuzz::property_failed("a control point per Bernstein polynomial", *text);
             }
