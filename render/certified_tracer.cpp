@@ -280,7 +280,9 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     // the rest only up to its end: σ' ∈ [0, 1] is σ = s0 + σ'·(1 − s0).
     const double s0 = std::max(0.0, (interval.lo - t0) / width);
     const double s_hi = std::min(1.0, (interval.hi - t0) / width);
-    if (!(s_hi > s0)) {
+    // An interval reaching past the ball's range (by roundings of the range's ends) is traced
+    // alone rather than searched in part.
+    if (!(s_hi > s0) || interval.lo < t0 || interval.hi > t0 + width) {
         return first_hit(ray, interval, tolerance);
     }
     BernsteinBall piece = ball;

@@ -99,6 +99,7 @@ PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t,
     // Iterations in a row whose linear model cannot close even half the distance: p is off
     // the patch there (the residual is normal to the patch), and the search stops.
     int stalled = 0;
+    double previous = std::numeric_limits<double>::infinity();
     for (int i = 0; i < kIterations && stalled < 3; ++i) {
         const Value m = evaluate(s, t, true);
         const Vec3 r = m.point - p;
@@ -122,8 +123,11 @@ PatchTrim::Preimage PatchTrim::refine(const Vec3& p, double s, double t,
         }
         const double step_s = -((c + damping) * gs - b * gt) / det;
         const double step_t = -((a + damping) * gt - b * gs) / det;
+        // A stall: the linear model cannot halve the distance and the distance itself stopped
+        // shrinking (it stayed above 0.9 of the best so far).
         const double predicted = glm::length(r + step_s * m.ds + step_t * m.dt);
-        stalled = predicted > 0.5 * distance ? stalled + 1 : 0;
+        stalled = predicted > 0.5 * distance && distance > 0.9 * previous ? stalled + 1 : 0;
+        previous = std::min(previous, distance);
         s += step_s;
         t += step_t;
         if (std::abs(step_s) + std::abs(step_t) < 1e-15) {
