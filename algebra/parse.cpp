@@ -587,6 +587,27 @@ std::vector<SourceLine> split_lines(std::string_view text) {
 
 namespace {
 
+// The first two non-blank lines of a text (number 0: there is none), and where each ends.
+struct HeaderLine {
+    std::string_view text;
+    std::size_t number = 0;
+    std::size_t end = 0;  // offset just past its newline
+};
+std::array<HeaderLine, 2> first_nonblank_lines(std::string_view text) {
+    std::array<HeaderLine, 2> found{};
+    std::size_t count = 0, pos = 0, number = 1;
+    while (count < 2 && pos < text.size()) {
+        const std::size_t eol = std::min(text.find('\n', pos), text.size());
+        const std::string_view line = text.substr(pos, eol - pos);
+        pos = std::min(eol + 1, text.size());
+        if (!trim(line).empty()) {
+            found[count++] = {line, number, pos};
+        }
+        ++number;
+    }
+    return found;
+}
+
 // `characteristic:`'s value, or msolve's second line: 0 or a prime below 2³¹.
 std::uint32_t parse_characteristic(std::string_view value, std::size_t line, std::size_t column) {
     std::size_t lead = 0;
@@ -703,30 +724,19 @@ IdealFile parse_ideal_file(std::string_view text) {
 
 IdealFile parse_msolve_file(std::string_view text) {
     IdealFile file;
-    // The positions of the first two non-blank lines, then the rest of the text.
-    std::size_t pos = 0, line = 1;
-    std::array<std::pair<std::string_view, std::size_t>, 2> header{};
-    for (auto& [content, number] : header) {
-        while (true) {
-            if (pos >= text.size()) {
-                throw ParseError(line, 1,
-                                 &content == &header[0].first ? "the variables (msolve format)"
-                                                              : "the characteristic",
-                                 "end of input");
-            }
-            const std::size_t eol = std::min(text.find('\n', pos), text.size());
-            const std::string_view this_line = text.substr(pos, eol - pos);
-            pos = eol + 1;
-            ++line;
-            if (!trim(this_line).empty()) {
-                content = this_line;
-                number = line - 1;
-                break;
-            }
-        }
+    // The first two non-blank lines, then the rest of the text.
+    const auto header = first_nonblank_lines(text);
+    if (header[0].number == 0 || header[1].number == 0) {
+        const std::size_t end_line =
+            static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+        throw ParseError(
+            end_line, 1,
+            header[0].number == 0 ? "the variables (msolve format)" : "the characteristic",
+            "end of input");
     }
-    const std::vector<std::string> names = parse_name_list(header[0].first, header[0].second, 1);
-    file.characteristic = parse_characteristic(header[1].first, header[1].second, 1);
+    std::size_t pos = header[1].end, line = header[1].number + 1;
+    const std::vector<std::string> names = parse_name_list(header[0].text, header[0].number, 1);
+    file.characteristic = parse_characteristic(header[1].text, header[1].number, 1);
     file.ring = PolyRing::make(names, MonomialOrder::grevlex(names.size()));
     // The polynomials: pieces between commas, each parsed where it starts.
     std::size_t piece_start = std::min(pos, text.size()), piece_line = line, piece_column = 1;
@@ -769,18 +779,10 @@ IdealFile parse_msolve_file(std::string_view text) {
 }
 
 bool looks_like_msolve(std::string_view text) {
-    std::array<std::string_view, 2> first{};
-    std::size_t found = 0, pos = 0;
-    while (found < 2 && pos < text.size()) {
-        const std::size_t eol = std::min(text.find('\n', pos), text.size());
-        const std::string_view line = trim(text.substr(pos, eol - pos));
-        pos = eol + 1;
-        if (!line.empty()) {
-            first[found++] = line;
-        }
-    }
-    return found == 2 && first[0].find(':') == std::string_view::npos &&
-           std::all_of(first[1].begin(), first[1].end(),
+    const auto first = first_nonblank_lines(text);
+    const std::string_view characteristic = trim(first[1].text);
+    return first[1].number != 0 && first[0].text.find(':') == std::string_view::npos &&
+           std::all_of(characteristic.begin(), characteristic.end(),
                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 

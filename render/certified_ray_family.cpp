@@ -104,8 +104,11 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
     // u and v: at most the centre's magnitude plus the two slopes'), and how far a pixel's
     // computed ray may be from its reference: the direction's rounding, and the rounding of
     // u = (x − cx)/hw and v (within 4.1u·(|x| + cx) of the pixel, times |U|).
+    // The computed d_center's own rounding is added: over a narrow rectangle far from the
+    // image's left edge the slopes are too small for the 1e-12 factor to absorb it.
     const Vec3 d_center = camera.direction(center_x_, center_y_);
-    const Vec3 slope_u = half_width_ * glm::abs(camera.per_column());
+    const Vec3 d_center_error = direction_rounding(camera, center_x_, center_y_);
+    const Vec3 slope_u = half_width_ * glm::abs(camera.per_column()) + d_center_error;
     const Vec3 slope_v = half_height_ * glm::abs(camera.per_row());
     const Vec3 largest_origin =
         (glm::abs(eye + plane_t * d_center) + std::abs(plane_t) * (slope_u + slope_v)) *
