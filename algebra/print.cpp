@@ -22,7 +22,7 @@ OutputFormat parse_output_format(std::string_view name) {
     if (name == "msolve") {
         return OutputFormat::msolve;
     }
-    throw InputError("--format " + std::string(name),
+    throw InputError("output format " + std::string(name),
                      "expected normalized, singular, macaulay2, latex or msolve");
 }
 

@@ -10,9 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "algebra/groebner/buchberger.h"
-#include "algebra/groebner/signature_groebner.h"
-#include "algebra/modular/modular_groebner.h"
+#include "algebra/groebner.h"
 #include "bench/bench_options.h"
 #include "bench/benches.h"
 #include "bench/singular.h"
@@ -46,13 +44,13 @@ int run_groebner_bench(const GroebnerBenchArgs& args) {
         const algebra::IdealFile ideal =
             cli::read_ideal(args.suite.data_dir + "/" + name + ".ideal");
         Timing mine;
-        algebra::GroebnerResult result;
+        algebra::GroebnerRequest request;
+        request.algorithm = *algebra::parse_algorithm(args.algorithm);  // a CLI11 choice
+        request.characteristic = ideal.characteristic;                  // over GF(p): F4 modulo p
+        algebra::GroebnerAnswer result;
         const auto start = std::chrono::steady_clock::now();
         do {
-            result = args.algorithm == "modular"     ? algebra::modular_groebner(ideal.generators)
-                     : args.algorithm == "auto"      ? algebra::groebner_automatic(ideal.generators)
-                     : args.algorithm == "signature" ? algebra::signature_groebner(ideal.generators)
-                                                     : algebra::groebner(ideal.generators);
+            result = algebra::groebner(ideal.generators, request);
             ++mine.runs;
             mine.seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -104,10 +102,12 @@ void add_groebner_bench(CLI::App& app, cli::CommandContext& context) {
         app, context, "groebner",
         "Gröbner bases of the suite (bench/data/SUITE.txt) against Singular's std", args,
         run_groebner_bench);
-    cli::add_choice(
-        cmd, "--algorithm", args->algorithm,
-        {{"auto", "the default"}, {"buchberger", ""}, {"signature", ""}, {"modular", "certified"}},
-        "the algorithm, as `locus groebner --algorithm`");
+    cli::add_choice(cmd, "--algorithm", args->algorithm,
+                    {{"auto", "the default"},
+                     {"buchberger", ""},
+                     {"signature", ""},
+                     {"modular", "certified; over GF(p), F4 modulo p"}},
+                    "the algorithm, as `locus groebner --algorithm`");
     cmd->add_option("--singular", args->singular,
                     "Singular executable for the same-run reference, or 'off'");
 }

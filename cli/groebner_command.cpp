@@ -5,10 +5,8 @@
 #include <thread>
 
 #include "algebra/error.h"
-#include "algebra/groebner/buchberger.h"
-#include "algebra/groebner/signature_groebner.h"
+#include "algebra/groebner.h"
 #include "algebra/groebner/verify.h"
-#include "algebra/modular/modular_groebner.h"
 #include "algebra/print.h"
 #include "cli/choices.h"
 #include "cli/command_support.h"
@@ -84,11 +82,72 @@ void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring
                  s.reductions, s.zero_reductions, s.reduction_steps, s.max_basis_size, s.seconds);
 }
 
-// The reduced basis over GF(p), computed there directly by the modular F4 (nothing is lifted,
-// so nothing needs certifying): for an ideal file of characteristic p, or for --algorithm f4
-// with --prime p on any file (the basis of its reduction modulo p). Coefficients in [0, p).
-int run_groebner_modulo(const GroebnerArgs& args, const algebra::IdealFile& ideal,
-                        algebra::OutputFormat format, const Deadline& deadline) {
+void print_modulo_stats(const algebra::GroebnerAnswer& answer) {
+    const algebra::modular::F4Stats& f4 = *answer.f4;
+    std::fprintf(stderr,
+                 "basis over GF(%u), computed there (no lifting): %zu elements, %zu F4 steps, "
+                 "largest matrix %zu x %zu, symbolic %.6f s, linear algebra %.6f s\n",
+                 answer.characteristic, answer.basis.size(), f4.steps, f4.largest_rows,
+                 f4.largest_columns, f4.symbolic_seconds, f4.linear_algebra_seconds);
+}
+
+void print_answer_stats(const algebra::GroebnerAnswer& answer, const algebra::PolyRing& ring) {
+    if (answer.f4) {
+        print_modulo_stats(answer);
+        return;
+    }
+    const auto algorithm = answer.stats.algorithm;
+    std::fprintf(stderr, "algorithm: %s\n",
+                 algorithm == algebra::GroebnerAlgorithm::modular ? "modular (multi-modular F4)"
+                 : algorithm == algebra::GroebnerAlgorithm::signature
+                     ? "signature (SB, Schreyer order)"
+                     : "buchberger");
+    print_stats({answer.basis, answer.outcome, answer.reason, answer.stats}, ring);
+    if (answer.modular) {
+        print_modular_stats(*answer.modular);
+    }
+}
+
+// --check: independent verification, over Q or modulo the answer's characteristic (there it
+// shows a Gröbner basis of an ideal containing the input; F4 modulo p keeps no cofactors).
+void check_answer(const GroebnerArgs& args, const algebra::GroebnerAnswer& answer,
+                  const algebra::IdealFile& ideal, const Deadline& deadline) {
+    const std::uint32_t p = answer.characteristic;
+    algebra::BasisCheck check;
+    try {
+        check = p != 0 ? algebra::check_groebner_basis_modulo(answer.basis, ideal.generators, p,
+                                                              deadline)
+                       : algebra::check_groebner_basis(answer.basis, ideal.generators);
+    } catch (const Timeout&) {
+        throw CommandFailure(exit_timeout,
+                             "timeout: the check stopped after " + timeout_text(args.limits));
+    }
+    if (!check.ok) {
+        throw CommandFailure(exit_check_failed, "check: FAILED: " + check.failure);
+    }
+    if (!algebra::is_reduced(answer.basis)) {
+        throw CommandFailure(exit_check_failed, "check: FAILED: the basis is not reduced");
+    }
+    if (p != 0) {
+        std::fprintf(stderr,
+                     "check: ok modulo %u (%zu generators and %zu S-pairs reduce to zero; the "
+                     "basis is reduced; it is not checked to lie in the input's ideal)\n",
+                     p, check.generators_checked, check.pairs_checked);
+    } else {
+        std::fprintf(stderr,
+                     "check: ok (%zu generators and %zu S-pairs reduce to zero; the basis is "
+                     "reduced)\n",
+                     check.generators_checked, check.pairs_checked);
+    }
+}
+
+// The flags as a request of the library's entry point (algebra/groebner.h). An input with a
+// characteristic, and --algorithm f4 (modulo --prime, by default 2^31 - 1), compute over GF(p)
+// directly; nothing is lifted there, so nothing needs certifying.
+algebra::GroebnerRequest request_of(const GroebnerArgs& args, const algebra::IdealFile& ideal,
+                                    const Deadline& deadline) {
+    algebra::GroebnerRequest request;
+    request.algorithm = *algebra::parse_algorithm(args.algorithm);  // a CLI11 choice
     const std::uint32_t file_p = ideal.characteristic;
     if (file_p != 0 && args.algorithm != "auto" && args.algorithm != "f4") {
         throw CommandFailure(exit_input, "--algorithm " + args.algorithm +
@@ -100,50 +159,33 @@ int run_groebner_modulo(const GroebnerArgs& args, const algebra::IdealFile& idea
                                              ": the input has characteristic " +
                                              std::to_string(file_p));
     }
-    const std::uint32_t p = file_p != 0 ? file_p : args.prime.value_or(2147483647u);
-    algebra::modular::F4Options f4_options;
-    f4_options.deadline = deadline;
-    algebra::modular::F4Stats f4_stats;
-    std::vector<algebra::Polynomial> basis;
-    try {
-        basis = algebra::groebner_modulo(ideal.generators, p, f4_options, &f4_stats);
-    } catch (const Timeout&) {
-        throw CommandFailure(exit_timeout,
-                             "timeout: F4 stopped after " + timeout_text(args.limits));
-    } catch (const InputError& e) {
-        throw CommandFailure(exit_input, e.what());
+    if (args.prime && file_p == 0 && args.algorithm != "f4") {
+        throw CommandFailure(exit_input, "--prime " + std::to_string(*args.prime) +
+                                             ": applies to --algorithm f4 (or write the "
+                                             "characteristic into the input)");
     }
-    std::cout << algebra::format_polynomials(basis, *ideal.ring, format, "G", p);
-    std::cout.flush();
-    if (args.stats) {
-        std::fprintf(stderr,
-                     "basis over GF(%u), computed there (no lifting): %zu elements, %zu F4 steps, "
-                     "largest matrix %zu x %zu, symbolic %.6f s, linear algebra %.6f s\n",
-                     p, basis.size(), f4_stats.steps, f4_stats.largest_rows,
-                     f4_stats.largest_columns, f4_stats.symbolic_seconds,
-                     f4_stats.linear_algebra_seconds);
+    if (file_p != 0) {
+        request.characteristic = file_p;
+    } else if (args.algorithm == "f4") {
+        request.characteristic = args.prime.value_or(2147483647u);
     }
-    if (args.check) {
-        algebra::BasisCheck check;
-        try {
-            check = algebra::check_groebner_basis_modulo(basis, ideal.generators, p,
-                                                         f4_options.deadline);
-        } catch (const Timeout&) {
-            throw CommandFailure(exit_timeout,
-                                 "timeout: the check stopped after " + timeout_text(args.limits));
-        }
-        if (!check.ok) {
-            throw CommandFailure(exit_check_failed, "check: FAILED: " + check.failure);
-        }
-        if (!algebra::is_reduced(basis)) {
-            throw CommandFailure(exit_check_failed, "check: FAILED: the basis is not reduced");
-        }
-        std::fprintf(stderr,
-                     "check: ok modulo %u (%zu generators and %zu S-pairs reduce to zero; the "
-                     "basis is reduced; it is not checked to lie in the input's ideal)\n",
-                     p, check.generators_checked, check.pairs_checked);
+    if (args.selection == "normal") {
+        request.selection = algebra::SelectionStrategy::normal;
+    } else if (args.selection == "sugar") {
+        request.selection = algebra::SelectionStrategy::sugar;
+    } else if (args.selection == "degree") {
+        request.selection = algebra::SelectionStrategy::degree;
     }
-    return exit_ok;
+    request.deadline = deadline;
+    if (args.threads < 0) {
+        throw CommandFailure(exit_input, "--threads " + std::to_string(args.threads) +
+                                             ": expected a positive count, or 0 for all cores");
+    }
+    request.certify = !args.no_certify;
+    request.threads = args.threads > 0
+                          ? args.threads
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    return request;
 }
 
 int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
@@ -156,88 +198,45 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
         }
     }();
     algebra::IdealFile ideal = read_ideal(args.file, args.order);
-    algebra::GroebnerOptions options;
-    if (args.selection == "normal") {
-        options.selection = algebra::SelectionStrategy::normal;
-    } else if (args.selection == "sugar") {
-        options.selection = algebra::SelectionStrategy::sugar;
-    } else if (args.selection == "degree") {
-        options.selection = algebra::SelectionStrategy::degree;
+    algebra::GroebnerRequest request = request_of(args, ideal, deadline);
+    if (request.characteristic == 0 && request.algorithm != algebra::Algorithm::modular) {
+        request.progress = progress.groebner("groebner");
     }
-    options.deadline = deadline;
-    if (args.threads < 0) {
-        throw CommandFailure(exit_input, "--threads " + std::to_string(args.threads) +
-                                             ": expected a positive count, or 0 for all cores");
-    }
-    options.certify = !args.no_certify;
-    options.threads = args.threads > 0
-                          ? args.threads
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    if (ideal.characteristic != 0 || args.algorithm == "f4") {
-        return run_groebner_modulo(args, ideal, format, deadline);
-    }
-    algebra::GroebnerResult result;
-    algebra::ModularStats modular_stats;
-    bool modular = args.algorithm == "modular";
+    algebra::GroebnerAnswer answer;
     try {
-        if (modular) {
-            algebra::ModularOptions modular_options;
-            modular_options.deadline = options.deadline;
-            modular_options.certify = !args.no_certify;
-            modular_options.threads = options.threads;
-            result = algebra::modular_groebner(ideal.generators, modular_options, &modular_stats);
-        } else if (args.algorithm == "auto") {
-            options.progress = progress.groebner("groebner");
-            result =
-                algebra::groebner_automatic(ideal.generators, options, &modular_stats, &modular);
-            progress.clear();
-        } else {
-            options.progress = progress.groebner("groebner");
-            result = args.algorithm == "signature"
-                         ? algebra::signature_groebner(ideal.generators, options)
-                         : algebra::groebner(ideal.generators, options);
-            progress.clear();
-        }
-    } catch (const Timeout&) {
+        answer = algebra::groebner(ideal.generators, request);
+    } catch (const InputError& e) {
         progress.clear();
-        throw CommandFailure(exit_timeout, "timeout: the modular algorithm stopped after " +
-                                               timeout_text(args.limits));
+        throw CommandFailure(exit_input, e.what());
     }
-    if (result.outcome == algebra::GroebnerOutcome::stopped_timeout) {
-        if (args.stats) {
-            print_stats(result, *ideal.ring);
+    progress.clear();
+    if (answer.outcome == algebra::GroebnerOutcome::unable) {
+        throw CommandFailure(exit_resource, answer.reason);
+    }
+    if (answer.outcome == algebra::GroebnerOutcome::stopped_timeout) {
+        if (args.stats && !answer.f4) {
+            print_stats({answer.basis, answer.outcome, answer.reason, answer.stats}, *ideal.ring);
+        }
+        if (answer.f4) {
+            throw CommandFailure(exit_timeout,
+                                 "timeout: F4 stopped after " + timeout_text(args.limits));
+        }
+        if (answer.algorithm == algebra::Algorithm::modular) {
+            throw CommandFailure(exit_timeout, "timeout: the modular algorithm stopped after " +
+                                                   timeout_text(args.limits));
         }
         throw CommandFailure(exit_timeout, "timeout: stopped after " + timeout_text(args.limits) +
-                                               " with " + std::to_string(result.basis.size()) +
+                                               " with " + std::to_string(answer.basis.size()) +
                                                " basis elements; the basis is not complete");
     }
-    std::cout << algebra::format_polynomials(result.basis, *ideal.ring, format);
+    std::cout << algebra::format_polynomials(answer.basis, *ideal.ring, format, "G",
+                                             answer.characteristic);
     std::cout.flush();
     if (args.stats) {
-        const auto algorithm = result.stats.algorithm;
-        std::fprintf(stderr, "algorithm: %s\n",
-                     algorithm == algebra::GroebnerAlgorithm::modular ? "modular (multi-modular F4)"
-                     : algorithm == algebra::GroebnerAlgorithm::signature
-                         ? "signature (SB, Schreyer order)"
-                         : "buchberger");
-        print_stats(result, *ideal.ring);
-        if (modular) {
-            print_modular_stats(modular_stats);
-        }
+        print_answer_stats(answer, *ideal.ring);
     }
     if (args.check) {
-        const algebra::BasisCheck check =
-            algebra::check_groebner_basis(result.basis, ideal.generators);
-        if (!check.ok) {
-            throw CommandFailure(exit_check_failed, "check: FAILED: " + check.failure);
-        }
-        if (!algebra::is_reduced(result.basis)) {
-            throw CommandFailure(exit_check_failed, "check: FAILED: the basis is not reduced");
-        }
-        std::fprintf(stderr,
-                     "check: ok (%zu generators and %zu S-pairs reduce to zero; the basis is "
-                     "reduced)\n",
-                     check.generators_checked, check.pairs_checked);
+        check_answer(args, answer, ideal, deadline);
     }
     return exit_ok;
 }

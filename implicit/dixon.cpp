@@ -364,7 +364,7 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
         }
     };
     if (map.parameter_ring->num_vars() != 2 || map.coordinates.size() != 3) {
-        throw InputError("--method dixon", "applies to surfaces (two parameters, x, y, z)");
+        throw InputError("method dixon", "applies to surfaces (two parameters, x, y, z)");
     }
     // Over a common denominator W: (x, y, z) = (P1, P2, P3) / W.
     CommonDenominatorForm form = over_common_denominator(map);

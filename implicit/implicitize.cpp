@@ -161,7 +161,7 @@ ImplicitResult implicitize_by_resultant(const Parametrization& map) {
     const std::size_t k = params->num_vars();
     const std::size_t n = map.coordinates.size();
     if (!((k == 1 && n == 2) || (k == 2 && n == 3))) {
-        throw InputError("--method resultant",
+        throw InputError("method resultant",
                          "applies to plane curves (one parameter, x and y) "
                          "and surfaces (two parameters, x, y and z) only");
     }

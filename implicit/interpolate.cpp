@@ -190,7 +190,7 @@ ImplicitResult implicitize_by_interpolation(
     const std::size_t num_params = map.parameter_ring->num_vars();
     const std::size_t n = map.coordinates.size();
     if (!((num_params == 1 && n == 2) || (num_params == 2 && n == 3))) {
-        throw InputError("--method interpolate",
+        throw InputError("method interpolate",
                          "applies to plane curves and surfaces (one equation); use groebner");
     }
     const long d = map_degree(map);

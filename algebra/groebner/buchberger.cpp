@@ -95,7 +95,7 @@ std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
     return std::nullopt;
 }
 
-GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOptions& options) {
+GroebnerResult buchberger(std::span<const Polynomial> generators, const GroebnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     GroebnerResult result;
     if (generators.empty()) {
@@ -217,8 +217,8 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const GroebnerOp
     return result;
 }
 
-GroebnerResult groebner(std::span<const Polynomial> generators, const MonomialOrder& order,
-                        const GroebnerOptions& options) {
+GroebnerResult buchberger(std::span<const Polynomial> generators, const MonomialOrder& order,
+                          const GroebnerOptions& options) {
     if (generators.empty()) {
         return {};
     }
@@ -228,7 +228,7 @@ GroebnerResult groebner(std::span<const Polynomial> generators, const MonomialOr
     for (const auto& g : generators) {
         moved.push_back(g.in_ring(target));
     }
-    return groebner(moved, options);
+    return buchberger(moved, options);
 }
 
 }  // namespace locus::algebra

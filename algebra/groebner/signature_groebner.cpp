@@ -463,7 +463,7 @@ GroebnerResult signature_groebner_or_buchberger(std::span<const Polynomial> gene
     } catch (const ExponentOverflow&) {
         // A signature left the packed range (they can exceed the polynomials' degrees); Buchberger
         // needs only lcms of leading monomials.
-        return groebner(generators, options);
+        return buchberger(generators, options);
     }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <random>
+#include <string>
 
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
@@ -262,14 +263,21 @@ class PrimeSequence {
     std::uint32_t last_ = 1u << 31;
 };
 
-}  // namespace
+// The basis when the run stops without an answer: the generators themselves, which generate
+// the ideal (the outcome says the basis is not a Gröbner basis).
+GroebnerResult stopped_with_generators(std::span<const Polynomial> generators,
+                                       GroebnerOutcome outcome, std::string reason) {
+    GroebnerResult result;
+    result.stats.algorithm = GroebnerAlgorithm::modular;
+    result.basis.assign(generators.begin(), generators.end());
+    result.outcome = outcome;
+    result.reason = std::move(reason);
+    return result;
+}
 
-GroebnerResult modular_groebner(std::span<const Polynomial> generators,
-                                const ModularOptions& options, ModularStats* stats) {
+GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
+                                         const ModularOptions& options, ModularStats& s) {
     const auto start = Clock::now();
-    ModularStats local;
-    ModularStats& s = stats != nullptr ? *stats : local;
-    s = ModularStats{};
     std::vector<Polynomial> inputs;
     for (const Polynomial& f : generators) {
         if (!inputs.empty()) {
@@ -496,10 +504,25 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
         group->candidate = reconstruct(*group, ring);
         s.lift_seconds += seconds_since(lift_start);
     }
-    throw ResourceLimit("modular Gröbner basis: no stable lift after " +
-                        std::to_string(options.max_primes) +
-                        " primes (coefficients of about 15 bits per prime; use --algorithm "
-                        "signature or buchberger)");
+    return stopped_with_generators(
+        generators, GroebnerOutcome::unable,
+        "modular Gröbner basis: no stable lift after " + std::to_string(options.max_primes) +
+            " primes (coefficients of about 15 bits per prime; the computation over Q, by the "
+            "signature algorithm or Buchberger's, does not guess sizes)");
+}
+
+}  // namespace
+
+GroebnerResult modular_groebner(std::span<const Polynomial> generators,
+                                const ModularOptions& options, ModularStats* stats) {
+    ModularStats local;
+    ModularStats& s = stats != nullptr ? *stats : local;
+    s = ModularStats{};
+    try {
+        return modular_groebner_or_throw(generators, options, s);
+    } catch (const Timeout& stop) {
+        return stopped_with_generators(generators, GroebnerOutcome::stopped_timeout, stop.what());
+    }
 }
 
 // Why these probe lengths: under degree orders the signature algorithm beats the modular one up
@@ -534,11 +557,8 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     modular_options.deadline = options.deadline;
     modular_options.threads = options.threads;
     modular_options.certify = options.certify;
-    try {
-        GroebnerResult modular = modular_groebner(generators, modular_options, stats);
-        modular.stats.seconds += result.stats.seconds;
-        return modular;
-    } catch (const InputError&) {
+    GroebnerResult modular = modular_groebner(generators, modular_options, stats);
+    if (modular.outcome == GroebnerOutcome::unable) {
         // No stable lift within max_primes (coefficients of tens of thousands of digits): the
         // computation over Q gets there without guessing sizes.
         if (used_modular != nullptr) {
@@ -546,13 +566,15 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         }
         return signature_groebner_or_buchberger(generators, options);
     }
+    modular.stats.seconds += result.stats.seconds;
+    return modular;
 }
 
 std::vector<Polynomial> groebner_modulo(std::span<const Polynomial> generators, std::uint32_t p,
                                         const modular::F4Options& options,
                                         modular::F4Stats* stats) {
     if (p < 2 || p >= (1u << 31) || !n_is_prime(p)) {
-        throw InputError("--prime " + std::to_string(p), "expected a prime below 2^31");
+        throw InputError("characteristic " + std::to_string(p), "expected a prime below 2^31");
     }
     const PrimeField field{p};
     std::vector<ModularPolynomial> reduced;
@@ -564,7 +586,7 @@ std::vector<Polynomial> groebner_modulo(std::span<const Polynomial> generators, 
         ring = f.ring();
         std::optional<ModularPolynomial> g = modular::reduce_modulo(f, field);
         if (!g) {
-            throw InputError("--prime " + std::to_string(p),
+            throw InputError("characteristic " + std::to_string(p),
                              "the prime divides a denominator of the input");
         }
         if (!g->is_zero()) {

@@ -365,7 +365,7 @@ TEST(ZeroReducers, HugeCoefficientsAreLeftToGmpIntegers) {
     }
     const IdealFile ideal =
         parse_ideal_file("vars: x,y\norder: grevlex\nx^2-" + a + "*y\n" + "x*y-" + b + "\n");
-    const GroebnerResult r = groebner(ideal.generators);
+    const GroebnerResult r = buchberger(ideal.generators);
     const BasisCheck check = certify_groebner_basis(r.basis, ideal.generators);
     EXPECT_TRUE(check.ok);
     EXPECT_TRUE(check.exact_fallback);

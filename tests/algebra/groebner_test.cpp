@@ -48,7 +48,7 @@ class GroebnerKnown : public ::testing::TestWithParam<std::string> {};
 TEST_P(GroebnerKnown, MatchesExpectedBasis) {
     const std::string base = known_dir() + "/" + GetParam();
     const IdealFile ideal = parse_ideal_file(test::read_text(base + ".ideal"));
-    const GroebnerResult r = groebner(ideal.generators);
+    const GroebnerResult r = buchberger(ideal.generators);
     ASSERT_EQ(r.outcome, GroebnerOutcome::complete);
     EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized),
               test::read_text(base + ".expected"));
@@ -64,7 +64,7 @@ TEST(GroebnerOracle, AgreesWithSingularOnRandomIdeals) {
     for (const auto& c : cases) {
         SCOPED_TRACE("oracle case " + c.number);
         const IdealFile ideal = parse_ideal_file(c.ideal);
-        const GroebnerResult r = groebner(ideal.generators);
+        const GroebnerResult r = buchberger(ideal.generators);
         EXPECT_EQ(format_polynomials(r.basis, *ideal.ring, OutputFormat::normalized), c.expected);
     }
 }
@@ -79,7 +79,7 @@ TEST(GroebnerProperties, VerifiedReducedAndIndependentOfInputOrderAndStrategy) {
         // past a minute): a deterministic size limit skips them, and most seeds must finish.
         GroebnerOptions limited;
         limited.max_basis_size = 40;
-        const GroebnerResult r = groebner(ideal.generators, limited);
+        const GroebnerResult r = buchberger(ideal.generators, limited);
         if (r.outcome == GroebnerOutcome::stopped_size) {
             ++skipped;
             continue;
@@ -102,10 +102,10 @@ TEST(GroebnerProperties, VerifiedReducedAndIndependentOfInputOrderAndStrategy) {
         for (auto strategy : strategies) {
             GroebnerOptions options;
             options.selection = strategy;
-            EXPECT_EQ(groebner(shuffled, options).basis, r.basis);
+            EXPECT_EQ(buchberger(shuffled, options).basis, r.basis);
         }
         // The reduced basis of a basis is itself, and reduced_basis is idempotent.
-        EXPECT_EQ(groebner(r.basis).basis, r.basis);
+        EXPECT_EQ(buchberger(r.basis).basis, r.basis);
         EXPECT_EQ(reduced_basis(r.basis), r.basis);
     }
     EXPECT_LE(skipped, test::seed_count(60) / 10);
@@ -115,11 +115,11 @@ TEST(GroebnerVerify, RejectsACorruptedBasis) {
     const RingPtr r = PolyRing::make({"x", "y"}, MonomialOrder::grevlex(2));
     const std::vector<Polynomial> gens = {parse_polynomial("x^2-y", r),
                                           parse_polynomial("x*y-1", r)};
-    std::vector<Polynomial> basis = groebner(gens).basis;
+    std::vector<Polynomial> basis = buchberger(gens).basis;
     ASSERT_TRUE(is_groebner_basis(basis, gens));
     basis.pop_back();  // drop an element: some S-pair or generator no longer reduces to zero
     EXPECT_FALSE(is_groebner_basis(basis, gens));
-    std::vector<Polynomial> scaled = groebner(gens).basis;
+    std::vector<Polynomial> scaled = buchberger(gens).basis;
     scaled[0] *= Rational(2);
     EXPECT_FALSE(is_reduced(scaled));
 }
@@ -153,7 +153,7 @@ TEST(GroebnerVerify, CertificationAgreesWithTheRationalCheck) {
         const IdealFile ideal = test::random_ideal(rng, seed);
         GroebnerOptions limited;
         limited.max_basis_size = 40;
-        const GroebnerResult r = groebner(ideal.generators, limited);
+        const GroebnerResult r = buchberger(ideal.generators, limited);
         if (r.outcome != GroebnerOutcome::complete || r.basis.empty()) {
             continue;
         }
@@ -198,13 +198,13 @@ TEST(GroebnerVerify, CertificationAgreesWithTheRationalCheck) {
 
 TEST(Groebner, EdgeCases) {
     const RingPtr r = PolyRing::make({"x", "y"}, MonomialOrder::lex(2));
-    EXPECT_TRUE(groebner(std::vector<Polynomial>{}).basis.empty());
+    EXPECT_TRUE(buchberger(std::vector<Polynomial>{}).basis.empty());
     const std::vector<Polynomial> unit = {parse_polynomial("x", r), parse_polynomial("x-1", r)};
-    const auto b = groebner(unit).basis;
+    const auto b = buchberger(unit).basis;
     ASSERT_EQ(b.size(), 1u);
     EXPECT_EQ(to_string(b[0]), "1");
     const std::vector<Polynomial> single = {parse_polynomial("3*x*y-6", r)};
-    EXPECT_EQ(to_string(groebner(single).basis[0]), "x*y-2");
+    EXPECT_EQ(to_string(buchberger(single).basis[0]), "x*y-2");
 }
 
 TEST(Groebner, TimeoutStopsWithAGeneratingSet) {
@@ -216,7 +216,7 @@ TEST(Groebner, TimeoutStopsWithAGeneratingSet) {
     for (const auto budget : {std::chrono::milliseconds(0), std::chrono::milliseconds(30)}) {
         GroebnerOptions options;
         options.deadline = std::chrono::steady_clock::now() + budget;
-        const GroebnerResult r = groebner(ideal.generators, options);
+        const GroebnerResult r = buchberger(ideal.generators, options);
         EXPECT_EQ(r.outcome, GroebnerOutcome::stopped_timeout);
         ASSERT_FALSE(r.basis.empty());
         EXPECT_EQ(groebner_automatic(r.basis).basis, full.basis);
@@ -236,7 +236,7 @@ TEST(Groebner, APartialBasisOfHugeCoefficientsIsReturnedAtTheDeadline) {
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
         options.deadline = deadline;
         const GroebnerResult r = signature ? signature_groebner(ideal.generators, options)
-                                           : groebner(ideal.generators, options);
+                                           : buchberger(ideal.generators, options);
         const double late =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - deadline).count();
         // The contract is 10 % + 0.2 s; a second leaves room for a loaded machine and the

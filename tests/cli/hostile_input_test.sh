@@ -204,7 +204,7 @@ expect "--fit with --clip-radius" 2 "--fit and --clip-radius: give one" -- \
 
 ## 9. Exit codes: the table, and library input errors as input errors.
 expect "the exit-code table is in --help" 0 "5 a resource limit" -- "$locus" --help
-expect "--method interpolate on a degenerate map exits 2" 2 "--method interpolate" -- \
+expect "--method interpolate on a degenerate map exits 2" 2 "method interpolate: " -- \
     "$locus" implicitize --method interpolate -p t "x = t" "y = t" "z = t"
 
 summary

@@ -1,0 +1,116 @@
+// The library's entry point (algebra/groebner.h): every algorithm over Q gives the basis of the
+// literature case, over GF(p) the basis F4 gives modulo p, and every way of not answering is an
+// outcome with a reason, not an exception.
+#include "algebra/groebner.h"
+
+#include <gtest/gtest.h>
+
+#include "algebra/error.h"
+#include "algebra/parse.h"
+#include "algebra/print.h"
+#include "tests/support/ideal_cases.h"
+
+namespace locus::algebra {
+namespace {
+
+std::string normalized(const std::vector<Polynomial>& basis, const PolyRing& ring) {
+    return format_polynomials(basis, ring, OutputFormat::normalized);
+}
+
+IdealFile read_case(const std::string& relative) {
+    return parse_ideal_file(test::read_text(test::source_dir() + "/" + relative));
+}
+
+TEST(GroebnerEntry, EveryAlgorithmOverQGivesTheKnownBasis) {
+    const IdealFile ideal = read_case("tests/data/known/cyclic4_grevlex.ideal");
+    const std::string expected =
+        test::read_text(test::source_dir() + "/tests/data/known/cyclic4_grevlex.expected");
+    for (const Algorithm algorithm :
+         {Algorithm::automatic, Algorithm::buchberger, Algorithm::signature, Algorithm::modular}) {
+        GroebnerRequest request;
+        request.algorithm = algorithm;
+        const GroebnerAnswer answer = groebner(ideal.generators, request);
+        ASSERT_EQ(answer.outcome, GroebnerOutcome::complete) << algorithm_name(algorithm);
+        EXPECT_EQ(normalized(answer.basis, *ideal.ring), expected) << algorithm_name(algorithm);
+        EXPECT_TRUE(answer.certified) << algorithm_name(algorithm);
+        EXPECT_TRUE(answer.reason.empty());
+        EXPECT_EQ(answer.characteristic, 0u);
+        EXPECT_NE(answer.algorithm, Algorithm::automatic);
+        if (algorithm != Algorithm::automatic) {
+            EXPECT_EQ(answer.algorithm, algorithm);
+        }
+        EXPECT_EQ(answer.modular.has_value(), answer.algorithm == Algorithm::modular);
+    }
+}
+
+TEST(GroebnerEntry, WithoutCertificationTheModularAnswerSaysSo) {
+    const IdealFile ideal = read_case("bench/data/katsura4.ideal");
+    GroebnerRequest request;
+    request.algorithm = Algorithm::modular;
+    request.certify = false;
+    const GroebnerAnswer answer = groebner(ideal.generators, request);
+    ASSERT_EQ(answer.outcome, GroebnerOutcome::complete);
+    EXPECT_FALSE(answer.certified);
+    request.certify = true;
+    EXPECT_EQ(groebner(ideal.generators, request).basis, answer.basis);
+}
+
+// Over GF(p) the answer is F4's modulo p, whatever route is asked for that can give it.
+TEST(GroebnerEntry, APrimeCharacteristicComputesModuloIt) {
+    const IdealFile ideal = read_case("bench/data/katsura4.ideal");
+    GroebnerRequest request;
+    request.characteristic = 101;
+    for (const Algorithm algorithm : {Algorithm::automatic, Algorithm::modular}) {
+        request.algorithm = algorithm;
+        const GroebnerAnswer answer = groebner(ideal.generators, request);
+        ASSERT_EQ(answer.outcome, GroebnerOutcome::complete);
+        EXPECT_EQ(answer.basis, groebner_modulo(ideal.generators, 101));
+        EXPECT_EQ(answer.characteristic, 101u);
+        EXPECT_TRUE(answer.f4.has_value());
+        EXPECT_FALSE(answer.certified);  // nothing lifted, nothing to certify
+    }
+    for (const Algorithm algorithm : {Algorithm::buchberger, Algorithm::signature}) {
+        request.algorithm = algorithm;
+        EXPECT_THROW(groebner(ideal.generators, request), InputError);
+    }
+    request.algorithm = Algorithm::automatic;
+    request.characteristic = 100;
+    EXPECT_THROW(groebner(ideal.generators, request), InputError);
+}
+
+TEST(GroebnerEntry, APassedDeadlineIsAnOutcomeForEveryRoute) {
+    const IdealFile ideal = read_case("bench/data/katsura7.ideal");
+    for (const std::uint32_t p : {0u, 65521u}) {
+        for (const Algorithm algorithm : {Algorithm::automatic, Algorithm::buchberger,
+                                          Algorithm::signature, Algorithm::modular}) {
+            if (p != 0 &&
+                (algorithm == Algorithm::buchberger || algorithm == Algorithm::signature)) {
+                continue;
+            }
+            GroebnerRequest request;
+            request.algorithm = algorithm;
+            request.characteristic = p;
+            request.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+            GroebnerAnswer answer;
+            ASSERT_NO_THROW(answer = groebner(ideal.generators, request));
+            EXPECT_EQ(answer.outcome, GroebnerOutcome::stopped_timeout)
+                << algorithm_name(algorithm) << " p=" << p;
+            EXPECT_FALSE(answer.reason.empty());
+            EXPECT_FALSE(answer.basis.empty());  // still generators of the ideal
+            EXPECT_FALSE(answer.certified);
+        }
+    }
+}
+
+TEST(GroebnerEntry, AlgorithmNamesRoundTrip) {
+    for (const Algorithm algorithm :
+         {Algorithm::automatic, Algorithm::buchberger, Algorithm::signature, Algorithm::modular}) {
+        EXPECT_EQ(parse_algorithm(algorithm_name(algorithm)), algorithm);
+    }
+    EXPECT_EQ(parse_algorithm("f4"), Algorithm::modular);
+    EXPECT_FALSE(parse_algorithm("groebner").has_value());
+    EXPECT_FALSE(parse_algorithm("").has_value());
+}
+
+}  // namespace
+}  // namespace locus::algebra
