@@ -50,6 +50,7 @@ expect "dimension counts a box of 12^8 standard monomials at once" 0 "zero-dimen
 expect "modular result is certified" 0 "certified over Q" -- "$locus" groebner bench/data/cyclic6.ideal --algorithm modular --stats
 expect "f4 modulo a prime" 0 "x0+2*x1+2*x2+2*x3+2*x4+65520" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65521
 expect "f4: not a prime" 2 "expected a prime below 2^31" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65520
+expect "--prime over Q without f4 is refused, not ignored" 2 "applies to --algorithm f4" -- "$locus" groebner bench/data/katsura5.ideal --prime 65521
 # Over GF(p) from the input: a characteristic: line, or msolve's format.
 { echo "characteristic: 101"; cat bench/data/katsura4.ideal; } >"$tmp/k4p.ideal"
 expect "characteristic p: computed modulo p and checked there" 0 "check: ok modulo 101" -- \
