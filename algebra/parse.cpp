@@ -86,6 +86,12 @@ class Lexer {
             // messages show '²' rather than half of it.
             t.kind = TokenKind::symbol;
             advance();
+            if (c == '*' && pos_ < text_.size() && text_[pos_] == '*') {
+                // Python's and SymPy's power: the same token as '^' (messages name it '^').
+                advance();
+                t.text = "^";
+                return t;
+            }
             const auto byte = static_cast<unsigned char>(c);
             std::size_t continuation = byte >= 0xF0 ? 3 : byte >= 0xE0 ? 2 : byte >= 0xC0 ? 1 : 0;
             while (continuation-- > 0 && pos_ < text_.size() &&
@@ -196,7 +202,7 @@ double power_work(const RationalFunction& result) {
 
 // Recursive descent over:  sum := product (('+'|'-') product)*
 //   product := unary (('*'|'/') unary)*   unary := ('+'|'-') unary | power
-//   power := atom ('^' integer)?          atom := number | variable | '(' sum ')'
+//   power := atom (('^'|'**') integer)?   atom := number | variable | '(' sum ')'
 template <class Value>
 class InfixParser {
   public:

@@ -27,6 +27,22 @@ TEST(Parse, ExactNumbersAndPrecedence) {
     EXPECT_EQ(to_string(parse_polynomial("1.25 + .5", r)), "7/4");
 }
 
+// Python's and SymPy's `**` is the power operator too (pasted from str() of a SymPy expression).
+TEST(Parse, DoubleStarIsAPower) {
+    const RingPtr r = xyz();
+    EXPECT_EQ(parse_polynomial("x**2*y**3 - (x+1)**2", r), parse_polynomial("x^2*y^3-(x+1)^2", r));
+    EXPECT_EQ(parse_polynomial("2 ** 3 * x", r), parse_polynomial("8*x", r));
+    for (const char* bad : {"x***2", "x** *2", "x**", "x**2**3", "x**-1"}) {
+        EXPECT_THROW(parse_polynomial(bad, r), ParseError) << bad;
+    }
+    try {
+        parse_polynomial("x**y", r);
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.column(), 4u);  // at the exponent
+    }
+}
+
 TEST(Parse, PrintParseRoundTrip) {
     for (int seed = 0; seed < test::seed_count(200); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
