@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "algebra/deadline.h"
 #include "algebra/division.h"
 #include "algebra/error.h"
 #include "algebra/groebner/signature_groebner.h"
@@ -133,7 +134,7 @@ std::vector<TrackedElement> tracked_groebner(Generators generators,
     const MonomialLayout& layout = ring->layout();
     std::vector<std::uint64_t> lcm(layout.words()), mi(layout.words()), mj(layout.words());
     while (!pairs.empty()) {
-        if (options.deadline && std::chrono::steady_clock::now() >= *options.deadline) {
+        if (deadline_passed(options.deadline)) {
             throw Timeout("the membership certificate was not complete at the deadline");
         }
         const auto [i, j] = pairs.back();

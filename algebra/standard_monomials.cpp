@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 
 namespace locus::algebra {
@@ -56,7 +57,7 @@ class Counter {
         : n_(n), deadline_(deadline) {}
 
     Integer count(std::vector<ExponentVector> generators) {
-        if (deadline_ && (++calls_ & 0xff) == 0 && std::chrono::steady_clock::now() >= *deadline_) {
+        if ((++calls_ & 0xff) == 0 && deadline_passed(deadline_)) {
             throw Timeout("counting the standard monomials was not complete at the deadline");
         }
         minimalize(generators);

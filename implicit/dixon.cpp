@@ -13,6 +13,7 @@
 #include <array>
 #include <random>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
 #include "implicit/detail/modular_lifting.h"
@@ -359,7 +360,7 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
                                     int threads, std::size_t max_size) {
     const auto start = std::chrono::steady_clock::now();
     auto check_deadline = [&] {
-        if (deadline && std::chrono::steady_clock::now() > *deadline) {
+        if (deadline_passed(deadline)) {
             throw Timeout("the Dixon route stopped at the deadline");
         }
     };

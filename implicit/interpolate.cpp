@@ -22,6 +22,7 @@
 #include <optional>
 #include <random>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "implicit/detail/modular_lifting.h"
 #include "implicit/implicitize.h"
@@ -182,7 +183,7 @@ long map_degree(const Parametrization& map) {
 ImplicitResult implicitize_by_interpolation(
     const Parametrization& map, std::optional<std::chrono::steady_clock::time_point> deadline) {
     auto check_deadline = [&] {
-        if (deadline && std::chrono::steady_clock::now() > *deadline) {
+        if (deadline_passed(deadline)) {
             throw Timeout("interpolation stopped at the deadline");
         }
     };

@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "render/ray_restriction.h"
 #include "render/surface_tracer.h"
@@ -285,7 +286,7 @@ class ExtentSearch {
 
   private:
     void check_deadline(std::size_t i) const {
-        if (i % 64 == 0 && deadline_ && std::chrono::steady_clock::now() > *deadline_) {
+        if (i % 64 == 0 && deadline_passed(deadline_)) {
             throw Timeout("estimating the surface's extent");
         }
     }

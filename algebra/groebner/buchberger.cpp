@@ -3,6 +3,7 @@
 // to the reduction work (a few thousand pairs on cyclic-6), so a heap would not pay for its upkeep
 // under the Gebauer–Möller deletions.
 #include "algebra/groebner/buchberger.h"
+#include "algebra/deadline.h"
 
 #include <algorithm>
 
@@ -86,7 +87,7 @@ std::vector<Polynomial> unit_basis(const RingPtr& ring) {
 
 std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
                                               std::size_t basis_size) {
-    if (options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+    if (locus::deadline_passed(options.deadline)) {
         return GroebnerOutcome::stopped_timeout;
     }
     if (options.max_basis_size != 0 && basis_size > options.max_basis_size) {

@@ -1,4 +1,5 @@
 #include "algebra/groebner/exact_zero_reducer.h"
+#include "algebra/deadline.h"
 
 #include <algorithm>
 
@@ -164,7 +165,7 @@ bool ExactZeroReducer::reduce_loaded(ReductionCounts& counts) {
             push(column);
         }
         ++counts.steps;
-        if (deadline_ && counts.steps % 16 == 0 && std::chrono::steady_clock::now() > *deadline_) {
+        if (counts.steps % 16 == 0 && deadline_passed(deadline_)) {
             clear_pending();
             throw ReductionInterrupted{};
         }

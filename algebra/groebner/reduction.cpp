@@ -1,4 +1,5 @@
 #include "algebra/groebner/reduction.h"
+#include "algebra/deadline.h"
 
 #include <algorithm>
 
@@ -86,7 +87,7 @@ bool Reducer::deadline_passed(bool costly_step) {
         return false;
     }
     steps_to_check_ = 16;
-    return std::chrono::steady_clock::now() > *deadline_;
+    return locus::deadline_passed(*deadline_);
 }
 
 IntegerPolynomial Reducer::reduce(IntegerPolynomial p, const std::vector<BasisElement>& basis,

@@ -1,4 +1,5 @@
 #include "algebra/groebner/residue_zero_reducer.h"
+#include "algebra/deadline.h"
 
 #include <algorithm>
 #include <iterator>
@@ -391,7 +392,7 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
             highest_bound_ = highest;
         }
         ++counts.steps;
-        if (deadline_ && counts.steps % 16 == 0 && std::chrono::steady_clock::now() > *deadline_) {
+        if (counts.steps % 16 == 0 && deadline_passed(deadline_)) {
             clear_pending();
             throw ReductionInterrupted{};
         }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/print.h"
@@ -39,7 +40,7 @@ Polynomial residues(const Polynomial& f, std::uint32_t p) {
 }
 
 void check_deadline(const Deadline& deadline) {
-    if (deadline && std::chrono::steady_clock::now() > *deadline) {
+    if (deadline_passed(deadline)) {
         throw Timeout("the check modulo p stopped at the deadline");
     }
 }

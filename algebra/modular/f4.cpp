@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "algebra/assert.h"
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/monomial_table.h"
 
@@ -246,7 +247,7 @@ class F4Engine {
     }
 
     void check_deadline() const {
-        if (options_.deadline && Clock::now() > *options_.deadline) {
+        if (deadline_passed(options_.deadline)) {
             throw Timeout("F4 modulo " + std::to_string(field_.p));
         }
     }

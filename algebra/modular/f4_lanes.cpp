@@ -12,6 +12,7 @@
 
 #include <flint/ulong_extras.h>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/groebner/residue_lanes.h"
 #include "algebra/modular/f4.h"
@@ -69,7 +70,7 @@ class LaneReplay {
     bool any_alive() const { return std::find(alive_.begin(), alive_.end(), 1) != alive_.end(); }
 
     void check_deadline() const {
-        if (options_.deadline && std::chrono::steady_clock::now() > *options_.deadline) {
+        if (deadline_passed(options_.deadline)) {
             throw Timeout("F4 replay modulo " + std::to_string(count_) + " primes");
         }
     }

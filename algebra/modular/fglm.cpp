@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 
 namespace locus::algebra::modular {
@@ -205,7 +206,7 @@ std::optional<std::vector<ModularPolynomial>> fglm(
     std::vector<Exponents> new_leads;
     std::vector<ModularPolynomial> out;
     while (!candidates.empty()) {
-        if (deadline && std::chrono::steady_clock::now() > *deadline) {
+        if (deadline_passed(deadline)) {
             throw Timeout("FGLM modulo " + std::to_string(field.p));
         }
         const Candidate c = *candidates.begin();

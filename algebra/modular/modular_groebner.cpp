@@ -9,6 +9,7 @@
 #include <flint/fmpz.h>
 #include <flint/ulong_extras.h>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/fglm.h"
@@ -546,8 +547,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     const auto probe_end = Clock::now() + probe;
     probing.deadline = options.deadline ? std::min(*options.deadline, probe_end) : probe_end;
     GroebnerResult result = signature_groebner_or_buchberger(generators, probing);
-    if (result.outcome != GroebnerOutcome::stopped_timeout ||
-        (options.deadline && Clock::now() >= *options.deadline)) {
+    if (result.outcome != GroebnerOutcome::stopped_timeout || deadline_passed(options.deadline)) {
         return result;
     }
     if (used_modular != nullptr) {

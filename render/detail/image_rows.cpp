@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 
 namespace locus::render::detail {
@@ -71,24 +72,23 @@ void for_each_row(int height, const ExecutionSettings& execution,
         execution.threads > 0 ? execution.threads : tbb::this_task_arena::max_concurrency();
     tbb::task_arena arena(threads);
     arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, height, 1), [&](const tbb::blocked_range<int>& range) {
-                for (int y = range.begin(); y < range.end(); ++y) {
-                    if (expired || (execution.deadline &&
-                                    std::chrono::steady_clock::now() >= *execution.deadline)) {
-                        expired = true;
-                        return;
-                    }
-                    row(y);
-                    const int done = ++rows_done;
-                    if (execution.progress) {
-                        std::unique_lock lock(progress_mutex, std::try_to_lock);
-                        if (lock.owns_lock()) {
-                            execution.progress(static_cast<double>(done) / height);
-                        }
-                    }
-                }
-            });
+        tbb::parallel_for(tbb::blocked_range<int>(0, height, 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              for (int y = range.begin(); y < range.end(); ++y) {
+                                  if (expired || deadline_passed(execution.deadline)) {
+                                      expired = true;
+                                      return;
+                                  }
+                                  row(y);
+                                  const int done = ++rows_done;
+                                  if (execution.progress) {
+                                      std::unique_lock lock(progress_mutex, std::try_to_lock);
+                                      if (lock.owns_lock()) {
+                                          execution.progress(static_cast<double>(done) / height);
+                                      }
+                                  }
+                              }
+                          });
     });
     if (expired) {
         throw Timeout("rendering stopped with " + std::to_string(rows_done.load()) + " of " +
