@@ -86,23 +86,13 @@ void implicitize_one(const ImplicitizeArgs& args, const implicit::Parametrizatio
                      const std::string& label, algebra::OutputFormat format,
                      const algebra::GroebnerOptions& options) {
     const std::string prefix = label.empty() ? "" : label + ": ";
-    std::optional<implicit::ImplicitResult> found;
-    if (args.method == "auto") {
-        std::string fallback_reason;
-        found = implicit::implicitize_auto(map, options, &fallback_reason);
-        if (!fallback_reason.empty()) {
-            std::fprintf(stderr, "%sfaster routes gave up (%s)\n", prefix.c_str(),
-                         fallback_reason.c_str());
-        }
-    } else if (args.method == "resultant") {
-        found = implicit::implicitize_by_resultant(map);
-    } else if (args.method == "interpolate") {
-        found = implicit::implicitize_by_interpolation(map, options.deadline);
-    } else if (args.method == "dixon") {
-        found = implicit::implicitize_by_dixon(map, options.deadline, options.threads);
+    std::string fallback_reason;
+    const implicit::ImplicitResult r = implicit::implicitize_by(
+        map, *implicit::parse_implicit_method(args.method), options, &fallback_reason);
+    if (!fallback_reason.empty()) {
+        std::fprintf(stderr, "%sfaster routes gave up (%s)\n", prefix.c_str(),
+                     fallback_reason.c_str());
     }
-    const implicit::ImplicitResult r =
-        found ? std::move(*found) : implicit::implicitize(map, options);
     std::fprintf(stderr, "%smethod: %s\n", prefix.c_str(), describe_method(r.method));
     for (const std::size_t v : map.half_angle) {
         const std::string& u = map.parameter_ring->variable_name(v);
@@ -118,14 +108,14 @@ void implicitize_one(const ImplicitizeArgs& args, const implicit::Parametrizatio
     const char* as_written = map.half_angle.empty()
                                  ? "the parametrization"
                                  : "the parametrization as written (sin^2 + cos^2 = 1)";
+    if (const auto wrong = implicit::first_not_vanishing(r, map)) {
+        throw CommandFailure(
+            exit_check_failed,
+            prefix + (r.equation ? "verification FAILED: the equation does not "
+                                   "vanish on the parametrization"
+                                 : "verification FAILED for " + algebra::to_string(*wrong)));
+    }
     if (r.equation) {
-        const bool proved = r.proved_on_map && map.circle_components.empty();
-        if (!proved && !implicit::vanishes_on_map_as_written(*r.equation, map)) {
-            throw CommandFailure(exit_check_failed,
-                                 prefix +
-                                     "verification FAILED: the equation does not vanish on the "
-                                     "parametrization");
-        }
         std::cout << algebra::format_polynomials(std::vector{*r.equation}, *r.ring, format);
         std::cout.flush();
         const algebra::Factorization fac = algebra::factor(*r.equation);
@@ -136,12 +126,6 @@ void implicitize_one(const ImplicitizeArgs& args, const implicit::Parametrizatio
                      r.equation->total_degree(), r.equation->num_terms(),
                      irreducible ? "irreducible" : "reducible");
         return;
-    }
-    for (const auto& g : r.generators) {
-        if (!implicit::vanishes_on_map_as_written(g, map)) {
-            throw CommandFailure(exit_check_failed,
-                                 prefix + "verification FAILED for " + algebra::to_string(g));
-        }
     }
     std::cout << algebra::format_polynomials(r.generators, *r.ring, format);
     std::cout.flush();

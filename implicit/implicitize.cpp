@@ -283,4 +283,41 @@ ImplicitResult implicitize_auto(const Parametrization& map, const algebra::Groeb
     return implicitize(map, options);
 }
 
+std::optional<ImplicitMethod> parse_implicit_method(std::string_view name) {
+    if (name == "auto") {
+        return ImplicitMethod::automatic;
+    }
+    if (name == "groebner") {
+        return ImplicitMethod::groebner;
+    }
+    if (name == "resultant") {
+        return ImplicitMethod::resultant;
+    }
+    if (name == "interpolate") {
+        return ImplicitMethod::interpolate;
+    }
+    if (name == "dixon") {
+        return ImplicitMethod::dixon;
+    }
+    return std::nullopt;
+}
+
+ImplicitResult implicitize_by(const Parametrization& map, ImplicitMethod method,
+                              const algebra::GroebnerOptions& options,
+                              std::string* fallback_reason) {
+    switch (method) {
+    case ImplicitMethod::automatic:
+        return implicitize_auto(map, options, fallback_reason);
+    case ImplicitMethod::resultant:
+        return implicitize_by_resultant(map);
+    case ImplicitMethod::interpolate:
+        return implicitize_by_interpolation(map, options.deadline);
+    case ImplicitMethod::dixon:
+        return implicitize_by_dixon(map, options.deadline, options.threads);
+    case ImplicitMethod::groebner:
+        break;
+    }
+    return implicitize(map, options);
+}
+
 }  // namespace locus::implicit

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "algebra/groebner/buchberger.h"
@@ -81,6 +82,18 @@ ImplicitResult implicitize_by_interpolation(
 ImplicitResult implicitize_auto(const Parametrization& map,
                                 const algebra::GroebnerOptions& options = {},
                                 std::string* fallback_reason = nullptr);
+
+// The routes by name, for the CLI's --method and the Python bindings' method=.
+enum class ImplicitMethod { automatic, groebner, resultant, interpolate, dixon };
+// "auto", "groebner", "resultant", "interpolate", "dixon"; nothing for any other name.
+std::optional<ImplicitMethod> parse_implicit_method(std::string_view name);
+
+// The route `method` names: implicitize_auto, implicitize (elimination under options),
+// implicitize_by_resultant, implicitize_by_interpolation or implicitize_by_dixon (dixon.h),
+// with their errors. `fallback_reason` as for implicitize_auto.
+ImplicitResult implicitize_by(const Parametrization& map, ImplicitMethod method,
+                              const algebra::GroebnerOptions& options = {},
+                              std::string* fallback_reason = nullptr);
 
 // Human-readable sentence for an ImageKind ("the image is a curve in space: ...").
 std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t num_coordinates);

@@ -1,5 +1,7 @@
 #include "implicit/verify.h"
 
+#include "implicit/implicitize.h"
+
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
 #include <flint/nmod_vec.h>
@@ -357,6 +359,23 @@ bool vanishes_on_map_as_written(const Polynomial& f, const Parametrization& map)
         return vanishes_on(f, map);
     }
     return substituted(f, map.circle_components, map.circle_ring, map.circle_relations).is_zero();
+}
+
+std::optional<algebra::Polynomial> first_not_vanishing(const ImplicitResult& result,
+                                                       const Parametrization& map) {
+    if (result.equation) {
+        const bool proved = result.proved_on_map && map.circle_components.empty();
+        if (!proved && !vanishes_on_map_as_written(*result.equation, map)) {
+            return result.equation;
+        }
+        return std::nullopt;
+    }
+    for (const algebra::Polynomial& g : result.generators) {
+        if (!vanishes_on_map_as_written(g, map)) {
+            return g;
+        }
+    }
+    return std::nullopt;
 }
 
 }  // namespace locus::implicit

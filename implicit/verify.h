@@ -8,10 +8,14 @@
 //     Zariski-dense in the complex conic), with no substitution involved.
 #pragma once
 
+#include <optional>
+
 #include "algebra/polynomial.h"
 #include "implicit/parametrization.h"
 
 namespace locus::implicit {
+
+struct ImplicitResult;  // implicitize.h
 
 // Does f vanish identically on the (rational) parametrization? f(x) with xᵢ = pᵢ/qᵢ
 // substituted, times the denominators' powers, must be the zero polynomial. Exact: a proof by
@@ -21,5 +25,13 @@ bool vanishes_on(const algebra::Polynomial& f, const Parametrization& map, int t
 // Does f vanish identically on the map as written (the same as vanishes_on for rational maps;
 // for angles, on sin u and cos u themselves)? Exact.
 bool vanishes_on_map_as_written(const algebra::Polynomial& f, const Parametrization& map);
+
+// Whether every polynomial `result` gives (its equation, or its generators) vanishes on the map
+// as written: the check every caller runs before it reports a result. The substitution is
+// skipped only where the route already proved the equation on this very map (rational maps
+// implicitized by interpolation or Dixon). Empty when all vanish, else the first polynomial
+// that does not.
+std::optional<algebra::Polynomial> first_not_vanishing(const ImplicitResult& result,
+                                                       const Parametrization& map);
 
 }  // namespace locus::implicit
