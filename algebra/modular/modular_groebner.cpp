@@ -158,7 +158,11 @@ bool value_agrees(LiftedTerm& term, const Group& group) {
 // attempt after every prime costs one reconstruction, and the lift is taken as soon as the
 // primes suffice (attempts after 1, 2, 3, 4, 6, 9, 13, 19, … primes, as before, used up to
 // half as many primes again as needed).
-std::optional<std::vector<Polynomial>> reconstruct(Group& group, const RingPtr& ring) {
+// Polls `deadline` per element (the last reconstruction of a large basis takes a quarter of a
+// second: katsura-10).
+std::optional<std::vector<Polynomial>> reconstruct(
+    Group& group, const RingPtr& ring,
+    const std::optional<std::chrono::steady_clock::time_point>& deadline) {
     if (group.primes < group.next_attempt_primes) {
         return std::nullopt;
     }
@@ -184,6 +188,7 @@ std::optional<std::vector<Polynomial>> reconstruct(Group& group, const RingPtr& 
         return true;
     };
     std::optional<std::vector<Polynomial>> result;
+    bool stopped = false;
     [&] {
         if (group.hard_element < group.elements.size() &&
             group.hard_term < group.elements[group.hard_element].size() &&
@@ -195,6 +200,10 @@ std::optional<std::vector<Polynomial>> reconstruct(Group& group, const RingPtr& 
         const std::size_t first = group.hard_element < count ? group.hard_element : 0;
         std::vector<Polynomial> basis(count, Polynomial(ring));
         for (std::size_t i = 0; i < count; ++i) {
+            if (deadline_passed(deadline)) {
+                stopped = true;  // thrown below, once the CRT tables are freed
+                return;
+            }
             const std::size_t e = (first + i) % count;
             Polynomial& poly = basis[e];
             for (std::size_t t = 0; t < group.elements[e].size(); ++t) {
@@ -213,6 +222,9 @@ std::optional<std::vector<Polynomial>> reconstruct(Group& group, const RingPtr& 
     }();
     fmpz_comb_temp_clear(temp);
     fmpz_comb_clear(comb);
+    if (stopped) {
+        throw Timeout("rational reconstruction");
+    }
     return result;
 }
 
@@ -502,7 +514,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             return result;
         }
         add_to_group(*group, basis, p, layout);
-        group->candidate = reconstruct(*group, ring);
+        group->candidate = reconstruct(*group, ring, options.deadline);
         s.lift_seconds += seconds_since(lift_start);
     }
     return stopped_with_generators(
