@@ -35,6 +35,16 @@ expect "docs and examples are installed" 0 "" -- \
     test -s "$tmp/moved/share/doc/locus/user-guide.md" -a -s "$tmp/moved/share/locus/scenes/twisted_torus.toml" \
     -a -s "$tmp/moved/share/locus/examples/enneper.param"
 
+# The Python package, where the build has it (not under the sanitizers): importable from the
+# moved tree's dist-packages.
+extension=$(find "$tmp/moved/lib" -name '_locus*.so' -print -quit)
+if [[ -n "$extension" ]]; then
+    site=$(dirname "$(dirname "$extension")")
+    expect "the moved Python package computes a basis" 0 "y^2-1" -- \
+        env PYTHONPATH="$site" /usr/bin/python3 -c \
+        "import locus; print(locus.groebner(['x^2+y','y^2-1'], vars='x,y', order='lex'))"
+fi
+
 mkdir -p "$tmp/consumer"
 cat > "$tmp/consumer/CMakeLists.txt" <<'CMAKE'
 cmake_minimum_required(VERSION 3.25)

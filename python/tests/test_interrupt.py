@@ -1,0 +1,70 @@
+# Long calls release the GIL and stop on Ctrl-C: a SIGINT while a Gröbner basis or a render
+# runs raises KeyboardInterrupt promptly (the issue asks for 0.2 s; the bound here leaves room
+# for a loaded machine, and the measured latency is printed).
+import os
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import pytest
+
+import locus
+
+SCRIPT = textwrap.dedent("""
+    import os, signal, sys, threading, time
+    import locus
+    which, source = sys.argv[1], sys.argv[2]
+    fired = []
+    def fire():
+        fired.append(time.time())
+        os.kill(os.getpid(), signal.SIGINT)
+    threading.Timer(0.4, fire).start()
+    try:
+        if which == "groebner":
+            locus.groebner(locus.read_ideal(source + "/bench/data/cyclic7.ideal"),
+                           algorithm="buchberger")
+        elif which == "modular":
+            locus.groebner(locus.read_ideal(source + "/bench/data/katsura10.ideal"),
+                           algorithm="modular")
+        else:
+            locus.render("x^30+y^30+z^30-1+(x*y*z)^10", size=(2048, 2048))
+        print("finished")
+    except KeyboardInterrupt:
+        print("interrupted %.3f" % (time.time() - fired[0]))
+""")
+
+
+@pytest.mark.parametrize("which", ["groebner", "modular", "render"])
+def test_ctrl_c_stops_the_work(source_dir, which):
+    result = subprocess.run([sys.executable, "-c", SCRIPT, which, str(source_dir)],
+                            capture_output=True, text=True, timeout=120,
+                            env=dict(os.environ))
+    words = result.stdout.split()
+    assert words and words[0] == "interrupted", result.stdout + result.stderr
+    latency = float(words[1])
+    print("%s: KeyboardInterrupt %.3f s after SIGINT" % (which, latency))
+    assert latency < 1.0
+
+
+def test_the_gil_is_released(source_dir):
+    ideal = locus.read_ideal(str(source_dir / "bench/data/katsura7.ideal"))
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.time())
+            time.sleep(0.005)
+
+    thread = threading.Thread(target=tick)
+    thread.start()
+    start = time.time()
+    locus.groebner(ideal, algorithm="buchberger")
+    elapsed = time.time() - start
+    stop.set()
+    thread.join()
+    # Python ran beside the computation: ticks spread over it, not only after it.
+    during = [t for t in ticks if start < t < start + elapsed]
+    assert elapsed < 0.05 or len(during) >= 3
