@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -656,6 +657,76 @@ void check_residues(const Polynomial& f, std::uint32_t p, std::size_t line, std:
     }
 }
 
+// A generator line of an ideal file (comments removed), and a generator's whole text.
+struct PendingLine {
+    std::string_view text;
+    std::size_t line, column;
+};
+struct GeneratorText {
+    std::string text;  // lines joined by '\n', so that the lexer keeps lines and columns
+    std::size_t line, column;
+};
+
+// The generators of an ideal file: a generator continues on the next line while a parenthesis
+// is open or its line ends with an operator (+ - * / ^); commas outside parentheses separate
+// generators (a line may hold several, and a trailing comma only ends one).
+std::vector<GeneratorText> join_generator_lines(const std::vector<PendingLine>& lines) {
+    std::vector<GeneratorText> out;
+    GeneratorText current{{}, 0, 0};
+    bool open = false;  // `current` has begun
+    int depth = 0;
+    const auto finish = [&] {
+        if (open && !trim(current.text).empty()) {
+            out.push_back(current);
+        }
+        open = false;
+        current.text.clear();
+    };
+    for (const PendingLine& pending : lines) {
+        if (open) {
+            current.text += '\n';
+        }
+        std::size_t column = pending.column;
+        for (const char c : pending.text) {
+            if (!open) {
+                if (std::isspace(static_cast<unsigned char>(c))) {
+                    ++column;
+                    continue;
+                }
+                // Leading spaces become the column the lexer starts from.
+                open = true;
+                current.line = pending.line;
+                current.column = column;
+            }
+            if (c == '(') {
+                ++depth;
+            } else if (c == ')') {
+                --depth;
+            }
+            if (c == ',' && depth <= 0) {
+                if (trim(current.text).empty()) {
+                    throw ParseError(pending.line, column, "a generator before ','", "','");
+                }
+                finish();
+                depth = 0;
+            } else {
+                current.text += c;
+            }
+            ++column;
+        }
+        const std::string_view tail = open ? trim(current.text) : std::string_view{};
+        const bool continues =
+            depth > 0 || (!tail.empty() && std::string_view("+-*/^").find(tail.back()) !=
+                                               std::string_view::npos);
+        if (!continues) {
+            finish();
+            depth = 0;
+        }
+    }
+    finish();
+    return out;
+}
+
 }  // namespace
 
 IdealFile parse_ideal_file(std::string_view text) {
@@ -664,10 +735,6 @@ IdealFile parse_ideal_file(std::string_view text) {
     bool have_vars = false;
     std::string order_text = "grevlex";
     std::size_t order_line = 0, order_column = 0;
-    struct PendingLine {
-        std::string_view text;
-        std::size_t line, column;
-    };
     std::vector<PendingLine> generator_lines;
     const std::vector<SourceLine> lines = split_lines(text);
     for (const auto& [raw, line_number] : lines) {
@@ -717,7 +784,7 @@ IdealFile parse_ideal_file(std::string_view text) {
                               ? MonomialOrder::grevlex(names.size())
                               : parse_monomial_order(order_text, names, order_line, order_column);
     file.ring = PolyRing::make(names, std::move(order));
-    for (const auto& g : generator_lines) {
+    for (const GeneratorText& g : join_generator_lines(generator_lines)) {
         Polynomial p = parse_polynomial(g.text, file.ring, g.line, g.column);
         check_residues(p, file.characteristic, g.line, g.column);
         if (!p.is_zero()) {

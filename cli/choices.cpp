@@ -63,6 +63,9 @@ const std::vector<Choice>& output_format_choices() {
         {"macaulay2", "the same for Macaulay2"},
         {"latex", "one polynomial a line, in LaTeX"},
         {"msolve", "msolve's input format: variables, characteristic, polynomials"},
+        {"sympy", "Python: SymPy symbols and a list of expressions"},
+        {"maple", "a Maple list"},
+        {"mathematica", "a Mathematica list"},
     };
     return choices;
 }

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "algebra/error.h"
+#include "algebra/system_input.h"
 #include "cli/exit_codes.h"
 
 namespace locus::cli {
@@ -116,10 +117,14 @@ algebra::IdealFile read_ideal(const std::string& path,
     const std::string name = path == "-" ? "<stdin>" : path;
     algebra::IdealFile file;
     try {
-        // msolve's format by its extension, or on standard input by its shape.
-        const bool msolve =
-            path.ends_with(".ms") || (path == "-" && algebra::looks_like_msolve(text));
-        file = msolve ? algebra::parse_msolve_file(text) : algebra::parse_ideal_file(text);
+        // msolve's format by its extension (or on standard input by its shape); a pasted
+        // Singular or Macaulay2 session by its ring declaration; else an ideal file.
+        algebra::IdealFormat format = path.ends_with(".ms") ? algebra::IdealFormat::msolve
+                                                            : algebra::detect_ideal_format(text);
+        if (format == algebra::IdealFormat::msolve && path != "-" && !path.ends_with(".ms")) {
+            format = algebra::IdealFormat::ideal_file;
+        }
+        file = algebra::parse_ideal_text(text, format);
     } catch (const Error& e) {  // ParseError, InputError, ExponentOverflow, ResourceLimit
         throw failure_about(name, e);
     }

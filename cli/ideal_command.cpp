@@ -108,13 +108,14 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
             algebra::ideal_membership(polynomial_argument(args.second, ring), gens, options);
         progress.clear();
         if (!cert.is_member) {
-            std::cout << "no\nremainder: " << algebra::to_string(cert.remainder) << "\n";
+            std::cout << "no\nremainder: " << algebra::format_polynomial(cert.remainder, format)
+                      << "\n";
             return exit_no;
         }
         std::cout << "yes\n";
         for (std::size_t i = 0; i < cert.cofactors.size(); ++i) {
-            std::cout << "cofactor " << i + 1 << ": " << algebra::to_string(cert.cofactors[i])
-                      << "\n";
+            std::cout << "cofactor " << i + 1 << ": "
+                      << algebra::format_polynomial(cert.cofactors[i], format) << "\n";
         }
         return exit_ok;
     }

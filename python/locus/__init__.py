@@ -28,7 +28,8 @@ __all__ = [
     "FORMATS", "TRACE_METHODS",
 ]
 
-FORMATS = ("normalized", "singular", "macaulay2", "latex", "msolve")
+FORMATS = ("normalized", "singular", "macaulay2", "latex", "msolve", "sympy", "maple",
+           "mathematica")
 TRACE_METHODS = tuple(_locus._trace_methods())
 
 
@@ -129,15 +130,16 @@ class Ideal:
 
 
 def read_ideal(source):
-    """An Ideal from a file path (.ideal, or .ms for msolve's format) or from the text itself."""
+    """An Ideal from a file path or from the text itself: an ideal file, msolve's format (.ms),
+    or a pasted Singular (``ring r = 0, (x,y), dp; ideal I = ...;``) or Macaulay2
+    (``R = QQ[x,y]; I = ideal(...)``) session, told apart by content."""
     text = str(source)
     path = None
     if "\n" not in text and _os.path.exists(text):
         path = text
         with open(path, encoding="utf-8") as f:
             text = f.read()
-    msolve = path.endswith(".ms") if path else _locus._looks_like_msolve(text)
-    return Ideal(*_locus._read_ideal(text, msolve))
+    return Ideal(*_locus._read_ideal(text, bool(path and path.endswith(".ms"))))
 
 
 def verify(basis, generators, characteristic=0):

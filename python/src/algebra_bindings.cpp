@@ -17,6 +17,7 @@
 #include "algebra/monomial_order.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
+#include "algebra/system_input.h"
 #include "python/src/bindings.h"
 
 namespace locus::python {
@@ -359,12 +360,12 @@ void bind_groebner(py::module_& m) {
                                         : c.failure);
     });
     m.def("_read_ideal", [](const std::string& text, bool msolve) {
-        const algebra::IdealFile file =
-            msolve ? algebra::parse_msolve_file(text) : algebra::parse_ideal_file(text);
+        // As `locus groebner FILE` reads: msolve's format by the .ms extension, else by content
+        // (an ideal file, a Singular or Macaulay2 session, msolve's two header lines).
+        const algebra::IdealFile file = algebra::parse_ideal_text(
+            text, msolve ? algebra::IdealFormat::msolve : algebra::detect_ideal_format(text));
         return py::make_tuple(Ring{file.ring}, file.generators, file.characteristic);
     });
-    m.def("_looks_like_msolve",
-          [](const std::string& text) { return algebra::looks_like_msolve(text); });
     m.def("_divide", [](const Polynomial& f, const Polynomials& divisors) {
         algebra::DivisionResult r = algebra::divide(f, divisors);
         return py::make_tuple(r.quotients, r.remainder);

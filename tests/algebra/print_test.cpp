@@ -56,7 +56,7 @@ TEST(Print, FormatsAWholeBasis) {
               "ring r = 0, (x,y), dp;\nideal G =\n  x*y-1,\n  x^2;\n");
     EXPECT_EQ(format_polynomials(b, *r, OutputFormat::macaulay2),
               "R = QQ[x,y, MonomialOrder => GRevLex];\nG = ideal(\n  x*y-1,\n  x^2)\n");
-    EXPECT_THROW(parse_output_format("maple"), InputError);
+    EXPECT_THROW(parse_output_format("maxima"), InputError);
 }
 
 }  // namespace

@@ -40,8 +40,8 @@ expect "negative exponent" 2 "line 2, column 3: expected a non-negative integer 
 expect "empty file" 2 "line 1, column 1: expected a 'vars:' line" -- "$locus" groebner "$tmp/empty.ideal"
 expect "missing file" 2 "cannot open" -- "$locus" groebner "$tmp/nothing.ideal"
 expect "bad --order" 2 "--order" -- "$locus" groebner $known/cyclic4_grevlex.ideal --order 'weights(1)'
-expect "bad --format" 2 "expected normalized, singular, macaulay2, latex or msolve" -- \
-    "$locus" groebner $known/cyclic4_grevlex.ideal --format maple
+expect "bad --format" 2 "expected normalized, singular, macaulay2, latex, msolve, sympy, maple or mathematica" -- \
+    "$locus" groebner $known/cyclic4_grevlex.ideal --format maxima
 expect "timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/cyclic6.ideal --timeout 0.05 --algorithm buchberger
 expect "modular timeout exits 3" 3 "timeout" -- "$locus" groebner bench/data/katsura9.ideal --timeout 0.2
 expect "ideal operations honour --timeout" 3 "not complete at the deadline" -- "$locus" ideal dimension bench/data/katsura9.ideal --timeout 0.05
@@ -51,6 +51,18 @@ expect "modular result is certified" 0 "certified over Q" -- "$locus" groebner b
 expect "f4 modulo a prime" 0 "x0+2*x1+2*x2+2*x3+2*x4+65520" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65521
 expect "f4: not a prime" 2 "expected a prime below 2^31" -- "$locus" groebner bench/data/katsura5.ideal --algorithm f4 --prime 65520
 expect "--prime over Q without f4 is refused, not ignored" 2 "applies to --algorithm f4" -- "$locus" groebner bench/data/katsura5.ideal --prime 65521
+# Sessions pasted from Singular and Macaulay2, and the other systems' output formats.
+printf 'LIB "poly.lib"; // comment\nring r = 0, (x,y), lp;\nideal I = x^2+y,\n  y^2-1;\nideal J = std(I);\n' > "$tmp/pasted.sing"
+expect "a pasted Singular session" 0 "x^2+y" -- "$locus" groebner "$tmp/pasted.sing"
+printf 'R = ZZ/7[x,y, MonomialOrder => Lex] -- comment\nI = ideal(x^2+y, y^2-1)\n' > "$tmp/pasted.m2"
+expect "a pasted Macaulay2 session over ZZ/7" 0 "y^2+6" -- "$locus" groebner "$tmp/pasted.m2"
+expect "a Singular paste with a local order is refused at its column" 2 "line 1, column 20" -- \
+    bash -c "printf 'ring r = 0, (x,y), ds;\nideal I = x;\n' | '$locus' groebner -"
+expect "--format sympy" 0 "G = [" -- "$locus" groebner "$tmp/pasted.sing" --format sympy
+expect "--format mathematica" 0 "G = {" -- "$locus" groebner "$tmp/pasted.sing" --format mathematica
+expect "--format maple" 0 "G := [" -- "$locus" groebner "$tmp/pasted.sing" --format maple
+expect "ideal member cofactors follow --format" 0 "cofactor 1: 3 x^{2} z^{2}" -- \
+    "$locus" ideal member tests/data/known/clo_2_8_membership_grlex.ideal '-4*x^2*y^2*z^2+y^6+3*z^5' --format latex
 # Over GF(p) from the input: a characteristic: line, or msolve's format.
 { echo "characteristic: 101"; cat bench/data/katsura4.ideal; } >"$tmp/k4p.ideal"
 expect "characteristic p: computed modulo p and checked there" 0 "check: ok modulo 101" -- \
