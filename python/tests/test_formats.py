@@ -72,3 +72,18 @@ def test_singular_reads_the_singular_output(source_dir, name):
     result = subprocess.run(["Singular", "-q"], input=script, capture_output=True, text=True,
                             timeout=60)
     assert result.stdout.split()[-1:] == ["1"], result.stdout + result.stderr
+
+
+@pytest.mark.skipif(shutil.which("M2") is None, reason="Macaulay2 is not installed")
+@pytest.mark.parametrize("name", [c[0] for c in CASES])
+def test_macaulay2_reads_the_macaulay2_output(source_dir, name):
+    basis = basis_of(source_dir, name)
+    # The same ideal, and the printed basis is already Macaulay2's Gröbner basis for its order:
+    # the leading terms agree.
+    script = basis.format("macaulay2") + (
+        "H = ideal gens gb G;\n"
+        "print toString(H == G and ideal leadTerm gens gb G == ideal leadTerm gens G)\n"
+        "exit 0\n")
+    result = subprocess.run(["M2", "--script", "/dev/stdin"], input=script, capture_output=True,
+                            text=True, timeout=120)
+    assert result.stdout.split()[-1:] == ["true"], result.stdout + result.stderr
