@@ -363,4 +363,30 @@ DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions
     return report;
 }
 
+HilbertData ideal_hilbert_data(const RingPtr& ring, Generators generators,
+                               const GroebnerOptions& options) {
+    // The standard grading needs an order that compares total degree first (weights of 1);
+    // other weights, even positive ones, grade differently.
+    const auto& first_row = ring->order().matrix_rows().front();
+    const bool total_degree_first =
+        std::all_of(first_row.begin(), first_row.end(),
+                    [&](std::int64_t w) { return w == first_row.front() && w > 0; });
+    const RingPtr graded =
+        total_degree_first ? ring : ring->with_order(MonomialOrder::grevlex(ring->num_vars()));
+    std::vector<Polynomial> moved;
+    for (const Polynomial& g : generators) {
+        if (!same_ring(g.ring(), ring)) {
+            throw MixedRings();
+        }
+        if (!g.is_zero()) {
+            moved.push_back(g.in_ring(graded));
+        }
+    }
+    std::vector<ExponentVector> leading;
+    for (const Polynomial& g : basis_of(moved, options)) {
+        leading.push_back(g.exponents(0));
+    }
+    return hilbert_data(std::move(leading), ring->num_vars(), options.deadline);
+}
+
 }  // namespace locus::algebra

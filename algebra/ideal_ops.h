@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "algebra/groebner/buchberger.h"
+#include "algebra/hilbert_series.h"
 #include "algebra/polynomial.h"
 
 namespace locus::algebra {
@@ -68,6 +69,15 @@ struct DimensionReport {
 // Finite-solution test: I is zero-dimensional iff for every variable some leading monomial of
 // its Gröbner basis is a pure power of it (CLO ch. 5 §3, Theorem 6).
 DimensionReport zero_dimension_test(Generators generators, const GroebnerOptions& options = {});
+
+// Krull dimension, degree, Hilbert series and polynomial and a maximal independent set of
+// Q[x]/I (hilbert_series.h), from the leading monomials of I's reduced basis under grevlex (the
+// ring's own order when it compares total degree first: the data are the same for every such
+// order). `ring`
+// is needed for the zero ideal (no generators: dimension n, degree 1). For a zero-dimensional
+// ideal the degree is the number of solutions with multiplicity (Singular's vdim).
+HilbertData ideal_hilbert_data(const RingPtr& ring, Generators generators,
+                               const GroebnerOptions& options = {});
 
 // The ring of `ring` with one more variable appended, named `base` or base + digits so that it
 // is fresh, under elim(new variable). Used by the operations above; public for tests.

@@ -3,53 +3,15 @@
 #include <algorithm>
 
 #include "algebra/deadline.h"
+#include "algebra/detail/monomial_ideal.h"
 #include "algebra/error.h"
 
 namespace locus::algebra {
 namespace {
 
-bool divides(const ExponentVector& a, const ExponentVector& b) {
-    for (std::size_t v = 0; v < a.size(); ++v) {
-        if (a[v] > b[v]) {
-            return false;
-        }
-    }
-    return true;
-}
-
-// How many variables g involves, and the last of them.
-struct Support {
-    std::size_t size = 0;
-    std::size_t variable = 0;
-};
-
-Support support_of(const ExponentVector& g) {
-    Support support;
-    for (std::size_t v = 0; v < g.size(); ++v) {
-        if (g[v] != 0) {
-            ++support.size;
-            support.variable = v;
-        }
-    }
-    return support;
-}
-
-// Drops generators that another one divides (and duplicates).
-void minimalize(std::vector<ExponentVector>& generators) {
-    std::sort(generators.begin(), generators.end());
-    generators.erase(std::unique(generators.begin(), generators.end()), generators.end());
-    std::vector<ExponentVector> kept;
-    for (std::size_t i = 0; i < generators.size(); ++i) {
-        bool redundant = false;
-        for (std::size_t j = 0; j < generators.size() && !redundant; ++j) {
-            redundant = j != i && divides(generators[j], generators[i]);
-        }
-        if (!redundant) {
-            kept.push_back(generators[i]);  // a copy: later rounds still divide by it
-        }
-    }
-    generators = std::move(kept);
-}
+using detail::minimalize;
+using detail::Support;
+using detail::support_of;
 
 class Counter {
   public:
@@ -62,8 +24,6 @@ class Counter {
         }
         minimalize(generators);
         std::vector<std::uint32_t> pure(n_, 0);
-        std::vector<std::size_t> mixed_uses(n_, 0);
-        bool any_mixed = false;
         for (const ExponentVector& g : generators) {
             const Support support = support_of(g);
             if (support.size == 0) {
@@ -73,36 +33,19 @@ class Counter {
                 // Minimal: one pure power per variable, and every variable keeps one (both
                 // M + ⟨x⟩ and M : x keep the others' and give x its own).
                 pure[support.variable] = g[support.variable];
-                continue;
-            }
-            any_mixed = true;
-            for (std::size_t v = 0; v < n_; ++v) {
-                mixed_uses[v] += g[v] != 0 ? 1 : 0;
             }
         }
-        if (!any_mixed) {
+        const std::optional<std::size_t> pivot = detail::pivot_variable(generators, n_);
+        if (!pivot) {
             Integer product(1);
             for (std::uint32_t d : pure) {
                 fmpz_mul_ui(product.get(), product.get(), d);
             }
             return product;
         }
-        // The pivot: the variable in most mixed generators, which shrinks both branches most.
-        const auto x = static_cast<std::size_t>(
-            std::max_element(mixed_uses.begin(), mixed_uses.end()) - mixed_uses.begin());
-        std::vector<ExponentVector> plus_x;                // M + ⟨x⟩
-        std::vector<ExponentVector> colon_x = generators;  // M : x
-        for (const ExponentVector& g : generators) {
-            if (g[x] == 0) {
-                plus_x.push_back(g);
-            }
-        }
-        ExponentVector x_itself(n_, 0);
-        x_itself[x] = 1;
-        plus_x.push_back(std::move(x_itself));
-        for (ExponentVector& g : colon_x) {
-            g[x] = g[x] > 0 ? g[x] - 1 : 0;
-        }
+        const std::size_t x = *pivot;
+        std::vector<ExponentVector> plus_x = detail::plus_variable(generators, x, n_);
+        std::vector<ExponentVector> colon_x = detail::colon_variable(std::move(generators), x);
         Integer total = count(std::move(plus_x));
         const Integer with_x = count(std::move(colon_x));
         fmpz_add(total.get(), total.get(), with_x.get());

@@ -16,6 +16,69 @@
 namespace locus::cli {
 namespace {
 
+// c_0 + c_1·v + … as text, ascending ("1+2*t-t^3", as series are written) or descending
+// ("3*s+1", as polynomials are); `Number` prints with to_string().
+template <class Number>
+std::string univariate(const std::vector<Number>& coefficients, const char* v,
+                       bool descending = false) {
+    std::string out;
+    for (std::size_t k = 0; k < coefficients.size(); ++k) {
+        const std::size_t e = descending ? coefficients.size() - 1 - k : k;
+        std::string c = coefficients[e].to_string();
+        if (c == "0") {
+            continue;
+        }
+        const bool negative = c[0] == '-';
+        if (negative) {
+            c.erase(0, 1);
+        }
+        out += negative ? "-" : out.empty() ? "" : "+";
+        if (e == 0) {
+            out += c;
+            continue;
+        }
+        out += c == "1" ? "" : c + "*";
+        out += v;
+        if (e > 1) {
+            out += "^" + std::to_string(e);
+        }
+    }
+    return out.empty() ? "0" : out;
+}
+
+// `locus ideal dimension`: the zero-dimension answer first (as before), then the Krull
+// dimension, the degree, the Hilbert series and polynomial and an independent set.
+void print_dimension(const algebra::HilbertData& h, const algebra::PolyRing& ring) {
+    if (h.unit) {
+        std::cout << "unit ideal (no solutions)\nKrull dimension: -1\n";
+        return;
+    }
+    if (h.dimension == 0) {
+        std::cout << "zero-dimensional: " << h.degree.to_string()
+                  << " solutions counted with multiplicity\n";
+    } else {
+        std::cout << "positive-dimensional (infinitely many solutions)\n";
+    }
+    std::cout << "Krull dimension: " << h.dimension << "\ndegree: " << h.degree.to_string() << "\n";
+    const std::string numerator = univariate(h.reduced_numerator, "t");
+    std::cout << "Hilbert series: ";
+    if (h.dimension == 0) {
+        std::cout << numerator << "\n";
+    } else {
+        std::cout << (h.reduced_numerator.size() > 1 ? "(" + numerator + ")" : numerator)
+                  << "/(1-t)" << (h.dimension > 1 ? "^" + std::to_string(h.dimension) : "") << "\n";
+    }
+    std::cout << "Hilbert polynomial: " << univariate(h.hilbert_polynomial, "s", true);
+    if (h.regularity > 0) {
+        std::cout << " (for s >= " << h.regularity << ")";
+    }
+    std::cout << "\nindependent set: {";
+    for (std::size_t i = 0; i < h.independent_set.size(); ++i) {
+        std::cout << (i ? ", " : "") << ring.variable_name(h.independent_set[i]);
+    }
+    std::cout << "}\n";
+}
+
 struct IdealArgs {
     std::string operation;
     std::string first;
@@ -84,7 +147,9 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     require_rationals(ideal, args.first);
     const algebra::RingPtr& ring = ideal.ring;
     const auto& gens = ideal.generators;
-    if (gens.empty()) {
+    // The zero ideal is an answer only for dimension (Q[x] itself); the other operations
+    // refuse it rather than guess what was meant.
+    if (gens.empty() && args.operation != "dimension") {
         throw CommandFailure(exit_input, args.first + ": the ideal has no generators");
     }
     auto print_basis = [&](const std::vector<algebra::Polynomial>& basis) {
@@ -143,20 +208,9 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
         return print_basis(algebra::eliminate(gens, vars, options));
     }
     if (op == "dimension") {
-        const auto report = algebra::zero_dimension_test(gens, options);
+        const algebra::HilbertData h = algebra::ideal_hilbert_data(ring, gens, options);
         progress.clear();
-        switch (report.kind) {
-        case algebra::Dimension::unit_ideal:
-            std::cout << "unit ideal (no solutions)\n";
-            break;
-        case algebra::Dimension::zero_dimensional:
-            std::cout << "zero-dimensional: " << *report.quotient_dimension
-                      << " solutions counted with multiplicity\n";
-            break;
-        case algebra::Dimension::positive:
-            std::cout << "positive-dimensional (infinitely many solutions)\n";
-            break;
-        }
+        print_dimension(h, *ring);
         return exit_ok;
     }
     const auto second = generators_in(args.second, ring);
@@ -210,7 +264,7 @@ void add_ideal_command(CLI::App& app, CommandContext& context) {
         "                            the ideal I op J, as a reduced basis in FILE1's ring\n"
         "  contains FILE1 FILE2      is the second ideal contained in the first? (exit 1 if not)\n"
         "  equal FILE1 FILE2         are the ideals equal? (exit 1 if not)\n"
-        "  dimension FILE            zero-dimension test and number of solutions");
+        "  dimension FILE            Krull dimension, degree, Hilbert series and polynomial");
     cmd->add_option("operation", args->operation, "the operation (see below)")
         ->required()
         ->check(

@@ -221,10 +221,16 @@ class _IdealOperations:
         return _locus._radical_member(polys[0], polys[1:], timeout)
 
     def dimension(self, i, vars=None, order=None, timeout=None):
-        """{'kind': 'unit' | 'zero-dimensional' | 'positive-dimensional', 'solutions': n or None}:
-        for a zero-dimensional ideal, the number of solutions counted with multiplicity."""
-        ring, polys = _polynomials(i, vars, order)
-        return _locus._zero_dimension(polys, timeout)
+        """Krull dimension and what goes with it, as a dict: 'kind' ('unit', 'zero-dimensional'
+        or 'positive-dimensional'), 'dimension' (-1 for the unit ideal), 'degree', 'solutions'
+        (for zero-dimensional ideals: their number with multiplicity, else None),
+        'hilbert_series' (Q with HS = Q(t)/(1-t)^dimension, coefficients from t^0),
+        'hilbert_polynomial' (coefficients from s^0, as Fractions), 'regularity' (HF = HP from
+        there on) and 'independent_set' (variable names). ``i`` may be empty: the zero ideal."""
+        ring, polys = _polynomials(i, vars, order) if vars is not None or len(i) else (None, [])
+        if ring is None:
+            raise InputError("dimension: give vars= for the zero ideal")
+        return _locus._dimension(ring, polys, timeout)
 
 
 ideal = _IdealOperations()

@@ -421,15 +421,35 @@ void bind_ideal_operations(py::module_& m) {
         const auto options = ideal_options(t);
         return run_interruptible([&] { return algebra::radical_membership(f, gens, options); });
     });
-    m.def("_zero_dimension", [](const Polynomials& gens, std::optional<double> t) {
+    m.def("_dimension", [](const Ring& ring, const Polynomials& gens, std::optional<double> t) {
         const auto options = ideal_options(t);
-        const algebra::DimensionReport r =
-            run_interruptible([&] { return algebra::zero_dimension_test(gens, options); });
+        const algebra::HilbertData h =
+            run_interruptible([&] { return algebra::ideal_hilbert_data(ring.ptr, gens, options); });
         py::dict out;
-        out["kind"] = r.kind == algebra::Dimension::unit_ideal         ? "unit"
-                      : r.kind == algebra::Dimension::zero_dimensional ? "zero-dimensional"
-                                                                       : "positive-dimensional";
-        out["solutions"] = r.quotient_dimension ? py::cast(*r.quotient_dimension) : py::none();
+        if (h.unit) {
+            out["kind"] = "unit";
+            out["dimension"] = -1;
+            out["solutions"] = 0;
+            return out;
+        }
+        out["kind"] = h.dimension == 0 ? "zero-dimensional" : "positive-dimensional";
+        out["dimension"] = h.dimension;
+        out["degree"] = py::int_(py::str(h.degree.to_string()));
+        out["solutions"] = h.dimension == 0 ? py::object(out["degree"]) : py::none();
+        py::list series, polynomial, independent;
+        for (const algebra::Integer& q : h.reduced_numerator) {
+            series.append(py::int_(py::str(q.to_string())));
+        }
+        for (const Rational& c : h.hilbert_polynomial) {
+            polynomial.append(to_fraction(c));
+        }
+        for (const std::size_t v : h.independent_set) {
+            independent.append(ring.ptr->variable_name(v));
+        }
+        out["hilbert_series"] = series;
+        out["hilbert_polynomial"] = polynomial;
+        out["regularity"] = h.regularity;
+        out["independent_set"] = independent;
         return out;
     });
 }

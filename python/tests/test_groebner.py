@@ -95,10 +95,16 @@ def test_ideal_operations():
     R = twisted.ring
     assert all(p.degree("t") == 0 for p in twisted)
     assert ideal.contains(twisted, [R("y-x^2"), R("z-x^3")])
-    assert ideal.dimension(["x^2-1", "y^2-4"], vars="x,y") == {
-        "kind": "zero-dimensional", "solutions": 4}
-    assert ideal.dimension(["x*y"], vars="x,y")["kind"] == "positive-dimensional"
+    points = ideal.dimension(["x^2-1", "y^2-4"], vars="x,y")
+    assert points["kind"] == "zero-dimensional" and points["solutions"] == 4
+    assert points["hilbert_series"] == [1, 2, 1] and points["dimension"] == 0
+    axes = ideal.dimension(["x*y"], vars="x,y")
+    assert (axes["kind"], axes["dimension"], axes["degree"]) == ("positive-dimensional", 1, 2)
+    assert axes["hilbert_polynomial"] == [2] and len(axes["independent_set"]) == 1
     assert ideal.dimension(["1"], vars="x,y")["kind"] == "unit"
+    plane = ideal.dimension([], vars="x,y,z")  # the zero ideal
+    assert plane["dimension"] == 3 and plane["degree"] == 1
+    assert plane["independent_set"] == ["x", "y", "z"]
     member, cofactors, remainder = ideal.member("x^3-x", ["x^2-1"], vars="x")
     assert member and remainder == 0 and cofactors[0] == remainder.ring("x")
     assert ideal.radical_member("x", ["x^3"], vars="x")
