@@ -72,4 +72,10 @@ class Timeout : public Error {
     explicit Timeout(const std::string& what) : Error("timeout: " + what) {}
 };
 
+// The caller cancelled the work (a newer request replaced it); nothing is wrong with the input.
+class Cancelled : public Error {
+  public:
+    explicit Cancelled(const std::string& what) : Error("cancelled: " + what) {}
+};
+
 }  // namespace locus

@@ -14,5 +14,6 @@ void add_implicitize_command(CLI::App& app, CommandContext& context);
 void add_demo_command(CLI::App& app, CommandContext& context);
 void add_render_command(CLI::App& app, CommandContext& context);
 void add_trace_command(CLI::App& app, CommandContext& context);
+void add_view_command(CLI::App& app, CommandContext& context);
 
 }  // namespace locus::cli

@@ -21,5 +21,6 @@ int main(int argc, char** argv) {
     add_demo_command(app, context);
     add_render_command(app, context);
     add_trace_command(app, context);
+    add_view_command(app, context);
     return run_app(app, context, argc, argv, "locus");
 }

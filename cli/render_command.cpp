@@ -128,51 +128,36 @@ void apply_flags(const RenderArgs& args, render::Scene& scene) {
 }
 
 render::Scene build_scene(const RenderArgs& args, Deadline deadline) {
-    const bool is_scene_file =
-        args.input.size() > 5 && args.input.compare(args.input.size() - 5, 5, ".toml") == 0;
     if (args.input.empty() == args.param.empty()) {
         throw CommandFailure(exit_input,
                              "render: give an equation, a scene file (.toml), patches (.bpt) or "
                              "--param FILE");
     }
+    const std::string& source = args.param.empty() ? args.input : args.param;
+    const SourceKind kind = args.param.empty() ? source_kind(args.input) : SourceKind::param_file;
+    std::optional<render::TraceMethod> method;
+    if (!args.method.empty()) {
+        method = render::parse_trace_method(args.method);
+    }
     render::Scene scene;
-    if (is_scene_file) {
+    if (kind == SourceKind::scene_file) {
         try {
-            std::optional<render::TraceMethod> method;
-            if (!args.method.empty()) {
-                method = render::parse_trace_method(args.method);
-            }
-            scene = render::parse_scene(read_input(args.input), scene_surface_compiler(deadline),
-                                        method, deadline);
+            scene = scene_from_source(source, kind, method, deadline);
             for (const std::string& note : scene.notes) {
-                std::fprintf(stderr, "locus: %s: %s\n", args.input.c_str(), note.c_str());
+                std::fprintf(stderr, "locus: %s: %s\n", source.c_str(), note.c_str());
             }
         } catch (const Timeout&) {
             throw;  // an implicitization ran past --timeout: not a fault of the file
         } catch (const Error& e) {
-            throw failure_about(args.input, e);
+            throw failure_about(source, e);
         } catch (const CommandFailure& e) {
             // An algebraic leaf that failed to implicitize or compile.
             const std::string message = e.what();
-            throw CommandFailure(e.code(), message.rfind(args.input + ": ", 0) == 0
-                                               ? message
-                                               : args.input + ": " + message);
+            throw CommandFailure(
+                e.code(), message.rfind(source + ": ", 0) == 0 ? message : source + ": " + message);
         }
-    } else if (const std::string patch_path =
-                   args.input.ends_with(".bpt") ? args.input : args.param;
-               !patch_path.empty() && holds_patches(patch_path, read_input(patch_path))) {
-        // Patches: one trimmed surface each, clipped to its control points' box.
-        scene.surfaces = patch_surfaces(patch_path, read_input(patch_path), deadline);
     } else {
-        render::Surface surface;
-        if (args.param.empty()) {
-            surface.equation = args.input;
-            surface.source = "equation";
-        } else {
-            surface.param_file = args.param;
-            trim_to_domain(args.param, read_input(args.param), surface);
-        }
-        scene.surfaces.push_back(surface);
+        scene = scene_from_source(source, kind, method, deadline);
     }
     apply_flags(args, scene);
     return scene;

@@ -6,7 +6,9 @@
 #include "algebra/print.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
+#include "cli/patch_surfaces.h"
 #include "implicit/implicitize.h"
+#include "render/scene_file.h"
 
 namespace locus::cli {
 
@@ -90,6 +92,51 @@ render::SurfaceCompiler scene_surface_compiler(Deadline deadline) {
         }
         return compile_equation(source.key + ".param", equation, "rendering");
     };
+}
+
+SourceKind source_kind(const std::string& source) {
+    if (source.ends_with(".toml")) {
+        return SourceKind::scene_file;
+    }
+    if (source.ends_with(".param") || source.ends_with(".bpt")) {
+        return SourceKind::param_file;
+    }
+    return SourceKind::equation;
+}
+
+render::Scene scene_from_source(const std::string& source, SourceKind kind,
+                                std::optional<render::TraceMethod> method, Deadline deadline) {
+    render::Scene scene;
+    switch (kind) {
+    case SourceKind::scene_file:
+        scene = render::parse_scene(read_input(source), scene_surface_compiler(deadline), method,
+                                    deadline);
+        break;
+    case SourceKind::param_file: {
+        const std::string text = read_input(source);
+        if (holds_patches(source, text)) {
+            // Patches: one trimmed surface each, clipped to its control points' box.
+            scene.surfaces = patch_surfaces(source, text, deadline);
+        } else {
+            render::Surface surface;
+            surface.param_file = source;
+            trim_to_domain(source, text, surface);
+            scene.surfaces.push_back(surface);
+        }
+        break;
+    }
+    case SourceKind::equation: {
+        render::Surface surface;
+        surface.equation = source;
+        surface.source = "equation";
+        scene.surfaces.push_back(surface);
+        break;
+    }
+    }
+    if (method && kind != SourceKind::scene_file) {
+        scene.options.method = *method;
+    }
+    return scene;
 }
 
 }  // namespace locus::cli

@@ -11,6 +11,7 @@
 
 #include "algebra/compiled.h"
 #include "render/scene.h"
+#include "render/trace_method.h"
 
 namespace locus::cli {
 
@@ -35,5 +36,23 @@ std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene,
 // The compiler for algebraic leaves of scene trees: implicitizes `param` files as above and
 // compiles with the same reports; errors name the leaf ("object[2].equation: ...").
 render::SurfaceCompiler scene_surface_compiler(Deadline deadline = std::nullopt);
+
+// What `locus render`, `locus view` and Python's locus.render take as a surface.
+enum class SourceKind {
+    equation,    // an equation in x, y, z
+    scene_file,  // a TOML scene (.toml)
+    param_file,  // a parametrization or Bézier patches (.param, .bpt)
+};
+// By the name's extension: .toml a scene, .param and .bpt a parametrization; else an equation.
+SourceKind source_kind(const std::string& source);
+
+// The scene of one source, before compilation: an equation as one surface; a scene file parsed
+// (its algebraic leaves compiled with scene_surface_compiler, `method` replacing its [render]
+// method before they are built); a parametrization as its implicit surface trimmed to its
+// domain, and patches as one trimmed surface each (patch_surfaces.h). Errors as those
+// functions throw them (CommandFailure, Error, Timeout).
+render::Scene scene_from_source(const std::string& source, SourceKind kind,
+                                std::optional<render::TraceMethod> method = std::nullopt,
+                                Deadline deadline = std::nullopt);
 
 }  // namespace locus::cli

@@ -22,6 +22,8 @@ find_package(TBB CONFIG REQUIRED)
 # which CMake rejects; the pkg-config file is accurate.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 find_package(tomlplusplus CONFIG REQUIRED)
+# The web server of `locus view` (view/).
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 # PNG without OpenImageIO (render/detail/plain_image_file.cpp).
 pkg_check_modules(SPNG REQUIRED IMPORTED_TARGET spng)
 if(LOCUS_BUILD_TESTS)

@@ -188,4 +188,15 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
     return written;
 }
 
+std::string png_bytes(const RenderedImage& image) {
+    std::vector<std::uint8_t> srgb(image.color.size());
+    std::transform(image.color.begin(), image.color.end(), srgb.begin(),
+                   [](float c) { return to_srgb8(c); });
+    std::optional<std::string> png = detail::encode_png(image.width, image.height, srgb.data());
+    if (!png) {
+        throw Error("the PNG encoder failed");
+    }
+    return std::move(*png);
+}
+
 }  // namespace locus::render

@@ -26,6 +26,10 @@ std::string partial_path(const std::string& path);
 
 // Throws ResourceLimit with OpenImageIO's message when a file cannot be written (nothing is
 // left under its name). Returns the paths written, the colour image first.
+// The colour of `image` as an 8-bit sRGB PNG in memory (for frames sent over HTTP); throws
+// Error when the encoder fails.
+std::string png_bytes(const RenderedImage& image);
+
 std::vector<std::string> write_image(const RenderedImage& image, const std::string& path,
                                      const std::vector<Aov>& aovs = {});
 

@@ -4,6 +4,7 @@
 // row, then each pixel costs a small polynomial evaluation plus its root finding.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <functional>
 #include <optional>
@@ -45,6 +46,9 @@ struct ExecutionSettings {
     // Rows not started by then are skipped and the render throws locus::Timeout: a picture
     // with missing rows is not a result (`locus render --timeout`).
     std::optional<std::chrono::steady_clock::time_point> deadline;
+    // When set and true, rows not started are skipped and the render throws locus::Cancelled
+    // (`locus view` cancels the frame in flight when a newer one is asked for).
+    const std::atomic<bool>* cancel = nullptr;
     // Fill the AOVs (depth, normal, work). Without them RenderedImage holds the colour only
     // and a frame allocates and writes a third of the memory.
     bool aovs = true;

@@ -49,39 +49,20 @@ struct RenderRequest {
 
 render::Scene scene_of(const RenderRequest& request,
                        std::chrono::steady_clock::time_point deadline) {
-    render::Scene scene;
     std::optional<render::TraceMethod> method;
     if (request.method) {
         method = render::parse_trace_method(*request.method);
     }
-    if (request.kind == "scene") {
-        scene = render::parse_scene(cli::read_input(request.source),
-                                    cli::scene_surface_compiler(deadline), method, deadline);
-    } else if (request.kind == "param") {
-        const std::string text = cli::read_input(request.source);
-        if (cli::holds_patches(request.source, text)) {
-            scene.surfaces = cli::patch_surfaces(request.source, text, deadline);
-        } else {
-            render::Surface surface;
-            surface.param_file = request.source;
-            cli::trim_to_domain(request.source, text, surface);
-            scene.surfaces.push_back(surface);
-        }
-    } else {
-        render::Surface surface;
-        surface.equation = request.source;
-        surface.source = "equation";
-        scene.surfaces.push_back(surface);
-    }
+    const cli::SourceKind kind = request.kind == "scene"   ? cli::SourceKind::scene_file
+                                 : request.kind == "param" ? cli::SourceKind::param_file
+                                                           : cli::SourceKind::equation;
+    render::Scene scene = cli::scene_from_source(request.source, kind, method, deadline);
     if (request.width < 1 || request.height < 1 || request.width > 16384 ||
         request.height > 16384) {
         throw_input_error("size: expected (width, height), each from 1 to 16384");
     }
     scene.width = request.width;
     scene.height = request.height;
-    if (method) {
-        scene.options.method = *method;
-    }
     if (request.samples) {
         if (*request.samples < 1 || *request.samples > 16) {
             throw_input_error("samples: expected N from 1 to 16 (N×N per pixel)");

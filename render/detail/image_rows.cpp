@@ -75,7 +75,9 @@ void for_each_row(int height, const ExecutionSettings& execution,
         tbb::parallel_for(tbb::blocked_range<int>(0, height, 1),
                           [&](const tbb::blocked_range<int>& range) {
                               for (int y = range.begin(); y < range.end(); ++y) {
-                                  if (expired || deadline_passed(execution.deadline)) {
+                                  if (expired || deadline_passed(execution.deadline) ||
+                                      (execution.cancel != nullptr &&
+                                       execution.cancel->load(std::memory_order_relaxed))) {
                                       expired = true;
                                       return;
                                   }
@@ -90,6 +92,10 @@ void for_each_row(int height, const ExecutionSettings& execution,
                               }
                           });
     });
+    if (expired && execution.cancel != nullptr && execution.cancel->load()) {
+        throw Cancelled("rendering cancelled with " + std::to_string(rows_done.load()) + " of " +
+                        std::to_string(height) + " rows done");
+    }
     if (expired) {
         throw Timeout("rendering stopped with " + std::to_string(rows_done.load()) + " of " +
                       std::to_string(height) + " rows done");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace locus::render::detail {
@@ -20,5 +21,9 @@ bool is_plain_image_format(const std::string& path);
 // (the file may then be incomplete: the caller writes to a temporary name).
 std::string write_plain_image(const std::string& path, int width, int height,
                               const std::uint8_t* rgb);
+
+// The same PNG in memory (for `locus view`, which sends frames over HTTP); nothing when libspng
+// fails.
+std::optional<std::string> encode_png(int width, int height, const std::uint8_t* rgb);
 
 }  // namespace locus::render::detail

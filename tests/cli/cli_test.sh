@@ -63,6 +63,13 @@ expect "--format mathematica" 0 "G = {" -- "$locus" groebner "$tmp/pasted.sing" 
 expect "--format maple" 0 "G := [" -- "$locus" groebner "$tmp/pasted.sing" --format maple
 expect "ideal member cofactors follow --format" 0 "cofactor 1: 3 x^{2} z^{2}" -- \
     "$locus" ideal member tests/data/known/clo_2_8_membership_grlex.ideal '-4*x^2*y^2*z^2+y^6+3*z^5' --format latex
+# locus view: the first line names the address; --timeout ends serving with exit 0; bad input
+# is refused before anything is served.
+expect "view serves and says where" 0 "serving on http://127.0.0.1:" -- \
+    "$locus" view 'x^2+y^2+z^2-r' --port 0 --timeout 0.5
+expect "view: a malformed equation is refused at its column" 2 "column 7" -- \
+    "$locus" view 'x^2 + * y' --port 0 --timeout 0.5
+expect "view: a port out of range" 2 "--port 70000" -- "$locus" view --port 70000 --timeout 0.5
 # Over GF(p) from the input: a characteristic: line, or msolve's format.
 { echo "characteristic: 101"; cat bench/data/katsura4.ideal; } >"$tmp/k4p.ideal"
 expect "characteristic p: computed modulo p and checked there" 0 "check: ok modulo 101" -- \
