@@ -19,5 +19,6 @@ int main(int argc, char** argv) {
     bench::add_implicit_bench(app, context);
     bench::add_render_bench(app, context);
     bench::add_sdf_bench(app, context);
+    bench::add_view_bench(app, context);
     return cli::run_app(app, context, argc, argv, "locus-bench");
 }

@@ -371,6 +371,8 @@ struct ViewServer::State {
 
     void routes() {
         server.set_payload_max_length(options.limits.max_body_bytes);
+        // Frames are small and interactive: no Nagle delay on the answers.
+        server.set_tcp_nodelay(true);
         server.Get("/", [](const httplib::Request&, httplib::Response& r) {
             r.set_content(std::string(assets::index_html), "text/html; charset=utf-8");
         });
