@@ -178,6 +178,20 @@ struct ViewServer::State {
         slot_freed.notify_one();
     }
 
+    // answer() within a render slot; 503 when the line is full.
+    template <class Work>
+    void answer_in_slot(httplib::Response& response, Work&& work) {
+        if (!acquire_slot()) {
+            send_error(response, 503, "busy: too many requests waiting");
+            return;
+        }
+        struct SlotGuard {
+            State* state;
+            ~SlotGuard() { state->release_slot(); }
+        } guard{this};
+        answer(response, std::forward<Work>(work));
+    }
+
     void handle_render(const httplib::Request& request, httplib::Response& response) {
         const Fields fields = fields_of(request);
         const std::string client_id = field(fields, "client").value_or("");
@@ -206,15 +220,7 @@ struct ViewServer::State {
             send_error(response, 409, "cancelled: a newer frame was asked for");
             return;
         }
-        if (!acquire_slot()) {
-            send_error(response, 503, "busy: too many frames waiting");
-            return;
-        }
-        struct SlotGuard {
-            State* state;
-            ~SlotGuard() { state->release_slot(); }
-        } guard{this};
-        answer(response, [&] {
+        answer_in_slot(response, [&] {
             const Frame frame = builder.build(fields);
             render::RenderStats stats;
             const render::RenderedImage image = render_frame(frame, cancel.get(), &stats, false);
@@ -232,15 +238,7 @@ struct ViewServer::State {
     // The frame's rays by the requested method against the certified one: pixels that one hits
     // and the other misses, or whose distances differ by more than 1e-6 relative.
     void handle_check(const httplib::Request& request, httplib::Response& response) {
-        if (!acquire_slot()) {
-            send_error(response, 503, "busy: too many frames waiting");
-            return;
-        }
-        struct SlotGuard {
-            State* state;
-            ~SlotGuard() { state->release_slot(); }
-        } guard{this};
-        answer(response, [&] {
+        answer_in_slot(response, [&] {
             Frame frame = builder.build(fields_of(request));
             frame.scene.options.shadows = false;
             render::RenderStats stats, reference_stats;
@@ -269,7 +267,7 @@ struct ViewServer::State {
 
     // The point under pixel (x, y): the frame's depth there along the pixel's ray.
     void handle_pick(const httplib::Request& request, httplib::Response& response) {
-        answer(response, [&] {
+        answer_in_slot(response, [&] {
             const Fields fields = fields_of(request);
             Frame frame = builder.build(fields);
             frame.scene.options.shadows = false;
@@ -318,15 +316,7 @@ struct ViewServer::State {
     }
 
     void handle_implicitize(const httplib::Request& request, httplib::Response& response) {
-        if (!acquire_slot()) {
-            send_error(response, 503, "busy: too many requests waiting");
-            return;
-        }
-        struct SlotGuard {
-            State* state;
-            ~SlotGuard() { state->release_slot(); }
-        } guard{this};
-        answer(response, [&] {
+        answer_in_slot(response, [&] {
             const std::string text = request.get_param_value("param");
             const implicit::Parametrization map = implicit::parse_parametrization(text);
             if (map.coordinates.size() != 3 || map.parameter_ring->num_vars() != 2) {

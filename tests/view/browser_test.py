@@ -143,6 +143,41 @@ try:
     wait_for_full_frame(n, "after the slider")
     check(fingerprint()[1] != before_slider, "moving the slider changes the surface")
     shot("05-slider.png")
+
+    # A value typed into the parameter's box, past the slider's range, widens the range.
+    value = browser.find_element(By.ID, "value-a")
+    value.clear()
+    value.send_keys("2.5\n")
+    n = frames()
+    browser.execute_script("document.getElementById('value-a').dispatchEvent(new Event('change'))")
+    wait_for_full_frame(n, "after typing a value")
+    slider_max = browser.execute_script("return document.getElementById('param-a').max")
+    check(float(slider_max) >= 2.5, "a typed value widens the slider's range (max %s)" % slider_max)
+
+    # A double-click on the surface centres the view there.
+    target_before = browser.execute_script("return window.locusState.camera.target.slice()")
+    n = frames()
+    # A pixel of the surface, nearest the centre: one whose colour is not the corner's.
+    dx, dy = browser.execute_script("""
+        const img = document.getElementById('view');
+        const c = document.createElement('canvas'); c.width = 64; c.height = 64;
+        const g = c.getContext('2d'); g.drawImage(img, 0, 0, 64, 64);
+        const d = g.getImageData(0, 0, 64, 64).data;
+        const bg = [d[0], d[1], d[2]];
+        let best = null;
+        for (let y = 0; y < 64; ++y) for (let x = 0; x < 64; ++x) {
+            const i = 4 * (64 * y + x);
+            const far = Math.abs(d[i] - bg[0]) + Math.abs(d[i+1] - bg[1]) + Math.abs(d[i+2] - bg[2]);
+            const r = (x - 32) ** 2 + (y - 32) ** 2;
+            if (far > 60 && (best === null || r < best[2])) best = [x, y, r];
+        }
+        const size = img.getBoundingClientRect();
+        return best ? [(best[0] + 0.5) / 64 * size.width - size.width / 2,
+                       (best[1] + 0.5) / 64 * size.height - size.height / 2] : [0, 0];""")
+    ActionChains(browser).move_to_element_with_offset(view, int(dx), int(dy)).double_click().perform()
+    wait_for_full_frame(n, "after the double-click")
+    target_after = browser.execute_script("return window.locusState.camera.target.slice()")
+    check(target_after != target_before, "a double-click on the surface re-centres the view")
 finally:
     browser.quit()
     server.terminate()

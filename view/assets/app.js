@@ -169,23 +169,30 @@ function buildSliders(names) {
   for (const p of state.parameters) {
     const row = document.createElement("div");
     row.className = "param";
-    row.innerHTML = `<span>${p.name}</span><input type="number" step="any" value="${p.min}">` +
+    row.innerHTML = `<span>${p.name}</span><input type="number" step="any" value="${p.min}" title="from">` +
       `<input type="range" id="param-${p.name}" min="${p.min}" max="${p.max}" step="any" value="${p.value}">` +
-      `<input type="number" step="any" value="${p.max}"><button title="animate">▶</button>`;
-    const [, low, slider, high, play] = row.children;
-    const value = document.createElement("span");
-    slider.title = String(p.value);
-    slider.addEventListener("input", () => { p.value = Number(slider.value); slider.title = slider.value; interactiveFrame(); });
+      `<input type="number" step="any" value="${p.max}" title="to">` +
+      `<input type="number" step="any" id="value-${p.name}" value="${p.value}" title="value">` +
+      `<button title="animate">▶</button>`;
+    const [, low, slider, high, value, play] = row.children;
+    const show = () => { value.value = Number(Number(p.value).toPrecision(4)); };
+    slider.addEventListener("input", () => { p.value = Number(slider.value); show(); interactiveFrame(); });
+    value.addEventListener("change", () => {
+      p.value = Number(value.value);
+      if (p.value < p.min) { p.min = p.value; low.value = p.value; slider.min = p.value; }
+      if (p.value > p.max) { p.max = p.value; high.value = p.value; slider.max = p.value; }
+      slider.value = p.value;
+      requestFrame(2);
+    });
     low.addEventListener("change", () => { p.min = Number(low.value); slider.min = low.value; });
     high.addEventListener("change", () => { p.max = Number(high.value); slider.max = high.value; });
-    play.addEventListener("click", () => animate(p, slider, play));
+    play.addEventListener("click", () => animate(p, slider, play, show));
     box.appendChild(row);
-    void value;
   }
 }
 
 // Sweeps one parameter back and forth, one quarter-resolution frame after another.
-function animate(p, slider, button) {
+function animate(p, slider, button, show) {
   if (animating) { animating = null; button.textContent = "▶"; refineSoon(); return; }
   button.textContent = "■";
   let direction = 1;
@@ -196,6 +203,7 @@ function animate(p, slider, button) {
     if (v > p.max || v < p.min) { direction = -direction; v = Math.min(p.max, Math.max(p.min, v)); }
     p.value = v;
     slider.value = v;
+    show();
     await requestFrame(0);
     requestAnimationFrame(step);
   };
