@@ -1,0 +1,133 @@
+// F4's pair update (Gebauer–Möller's criteria as Becker–Weispfenning's UPDATE) and the
+// selection of each step's pairs by sugar.
+#include "algebra/modular/detail/f4_engine.h"
+
+#include <algorithm>
+
+namespace locus::algebra::modular::detail {
+
+// An element without pairs (a replay repeats the recorded steps instead).
+// In a replay, also notes whether its support is the recorded one.
+void F4Engine::append_element(ModularPolynomial poly) {
+    const std::size_t h = basis_.size();
+    fits_trace_.push_back(replaying_ != nullptr && h < replaying_->supports.size() &&
+                          poly.monomials == replaying_->supports[h]);
+    basis_.push_back({std::move(poly), 0, false, 0});
+    basis_[h].mask = layout_.divisibility_mask(lead(h));
+}
+
+// Gebauer–Möller (Becker–Weispfenning's UPDATE) for the element just appended.
+void F4Engine::add_element(ModularPolynomial poly, std::uint32_t sugar) {
+    check_deadline();  // each call is quadratic in the basis size
+    const std::size_t h = basis_.size();
+    if (record_ != nullptr) {
+        record_->supports.push_back(poly.monomials);
+    }
+    basis_.push_back({std::move(poly), 0, false, sugar});
+    basis_[h].mask = layout_.divisibility_mask(lead(h));
+    std::vector<Pair> fresh;
+    for (std::size_t g = 0; g < h; ++g) {
+        if (basis_[g].redundant) {
+            continue;
+        }
+        Pair pair{g, h, std::vector<std::uint64_t>(words_), 0};
+        layout_.lcm(lead(g), lead(h), pair.lcm.data());
+        const std::uint32_t lcm_degree = layout_.leading_weight(pair.lcm.data());
+        pair.degree = std::max(basis_[g].sugar + lcm_degree - layout_.leading_weight(lead(g)),
+                               sugar + lcm_degree - layout_.leading_weight(lead(h)));
+        fresh.push_back(std::move(pair));
+        ++stats_.pairs_created;
+    }
+    // Chain criterion among the new pairs (M and F): drop (g, h) when another new pair's
+    // lcm properly divides its lcm, or equals it and comes first.
+    // The comparison is quadratic in the basis size, so a divisibility mask rejects most
+    // non-divisors first (with hundreds of variables the word-by-word test dominated).
+    std::vector<char> keep(fresh.size(), 1);
+    std::vector<std::uint64_t> lcm_mask(fresh.size());
+    for (std::size_t a = 0; a < fresh.size(); ++a) {
+        lcm_mask[a] = layout_.divisibility_mask(fresh[a].lcm.data());
+    }
+    for (std::size_t a = 0; a < fresh.size(); ++a) {
+        for (std::size_t b = 0; b < fresh.size() && keep[a]; ++b) {
+            if (a == b || !keep[b] || (lcm_mask[b] & ~lcm_mask[a]) != 0) {
+                continue;
+            }
+            if (layout_.divides(fresh[b].lcm.data(), fresh[a].lcm.data()) &&
+                (!layout_.equal(fresh[b].lcm.data(), fresh[a].lcm.data()) || b < a)) {
+                keep[a] = 0;
+                ++stats_.removed_by_chain;
+            }
+        }
+    }
+    // Old pairs (B): drop (g1, g2) when lm(h) divides their lcm and both lcm(gi, h) differ.
+    std::vector<std::uint64_t> scratch(words_);
+    std::erase_if(pairs_, [&](const Pair& pair) {
+        if (!layout_.divides(lead(h), pair.lcm.data())) {
+            return false;
+        }
+        layout_.lcm(lead(pair.first), lead(h), scratch.data());
+        if (layout_.equal(scratch.data(), pair.lcm.data())) {
+            return false;
+        }
+        layout_.lcm(lead(pair.second), lead(h), scratch.data());
+        if (layout_.equal(scratch.data(), pair.lcm.data())) {
+            return false;
+        }
+        ++stats_.removed_by_chain;
+        return true;
+    });
+    // Product criterion on the survivors.
+    for (std::size_t a = 0; a < fresh.size(); ++a) {
+        if (!keep[a]) {
+            continue;
+        }
+        if (layout_.coprime(lead(fresh[a].first), lead(h))) {
+            ++stats_.removed_by_product;
+            continue;
+        }
+        pairs_.push_back(std::move(fresh[a]));
+    }
+    for (std::size_t g = 0; g < h; ++g) {
+        if (!basis_[g].redundant && layout_.divides(lead(h), lead(g))) {
+            basis_[g].redundant = true;
+        }
+    }
+}
+
+// The pairs of this step: all of the least sugar degree (batch_, degree orders), or the one
+// best pair; `degree` receives the sugar of what the step makes.
+std::vector<Pair> F4Engine::select_pairs(std::uint32_t& degree) {
+    degree = pairs_.front().degree;
+    for (const Pair& pair : pairs_) {
+        degree = std::min(degree, pair.degree);
+    }
+    std::vector<Pair> chosen;
+    if (!batch_) {
+        std::size_t best = pairs_.size();
+        for (std::size_t i = 0; i < pairs_.size(); ++i) {
+            const bool better =
+                best == pairs_.size() ||
+                (!by_lcm_only_ && pairs_[i].degree != pairs_[best].degree
+                     ? pairs_[i].degree < pairs_[best].degree
+                     : layout_.compare(pairs_[i].lcm.data(), pairs_[best].lcm.data()) < 0);
+            if (better) {
+                best = i;
+            }
+        }
+        degree = pairs_[best].degree;  // the sugar of what this step makes
+        chosen.push_back(std::move(pairs_[best]));
+        pairs_.erase(pairs_.begin() + static_cast<long>(best));
+    } else {
+        std::erase_if(pairs_, [&](Pair& pair) {
+            if (pair.degree != degree) {
+                return false;
+            }
+            chosen.push_back(std::move(pair));
+            return true;
+        });
+    }
+    stats_.pairs_reduced += chosen.size();
+    return chosen;
+}
+
+}  // namespace locus::algebra::modular::detail

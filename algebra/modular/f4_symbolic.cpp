@@ -1,0 +1,110 @@
+// F4's symbolic preprocessing: the rows of a step's Macaulay matrix and their columns.
+#include "algebra/modular/detail/f4_engine.h"
+
+#include <algorithm>
+
+namespace locus::algebra::modular::detail {
+
+RowSpec F4Engine::make_row(std::size_t element, const std::uint64_t* multiplier) {
+    RowSpec row{element, {}};
+    const ModularPolynomial& f = basis_[element].poly;
+    row.monomials.reserve(f.size());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        row.monomials.push_back(product_index(multiplier, f.monomial(i, words_)));
+    }
+    return row;
+}
+
+// A basis element whose leading monomial divides m (non-redundant ones first).
+std::optional<std::size_t> F4Engine::reducer_for(const std::uint64_t* m) const {
+    const std::uint64_t mask = layout_.divisibility_mask(m);
+    std::optional<std::size_t> redundant;
+    for (std::size_t g = 0; g < basis_.size(); ++g) {
+        if ((basis_[g].mask & ~mask) != 0 || !layout_.divides(lead(g), m)) {
+            continue;
+        }
+        if (!basis_[g].redundant) {
+            return g;
+        }
+        if (!redundant) {
+            redundant = g;
+        }
+    }
+    return redundant;
+}
+
+// Symbolic preprocessing: reducer rows for every monomial of `rows` (and of the reducers
+// themselves) that some leading monomial divides. `pivot_of_monomial` maps table indices to
+// the reducer row with that leading monomial (or −1).
+void F4Engine::preprocess(std::vector<RowSpec>& reducers, std::vector<RowSpec>& rows,
+                          std::vector<std::int64_t>& pivot_of_monomial, std::vector<char>& seen) {
+    std::vector<std::uint32_t> work;
+    auto note = [&](const RowSpec& row) {
+        for (std::uint32_t m : row.monomials) {
+            if (m >= seen.size()) {
+                seen.resize(table_.size(), 0);
+                pivot_of_monomial.resize(table_.size(), -1);
+            }
+            if (!seen[m]) {
+                seen[m] = 1;
+                work.push_back(m);
+            }
+        }
+    };
+    for (const RowSpec& r : reducers) {
+        note(r);
+    }
+    for (const RowSpec& r : rows) {
+        note(r);
+    }
+    std::vector<std::uint64_t> quotient(words_);
+    for (std::size_t next = 0; next < work.size(); ++next) {
+        const std::uint32_t m = work[next];
+        if (pivot_of_monomial[m] >= 0) {
+            continue;
+        }
+        const std::optional<std::size_t> g = reducer_for(table_.at(m));
+        if (!g) {
+            continue;
+        }
+        layout_.divide(table_.at(m), lead(*g), quotient.data());
+        RowSpec row = make_row(*g, quotient.data());
+        seen.resize(table_.size(), 0);
+        pivot_of_monomial.resize(table_.size(), -1);
+        pivot_of_monomial[m] = static_cast<std::int64_t>(reducers.size());
+        note(row);
+        reducers.push_back(std::move(row));
+    }
+}
+
+// Columns: the seen monomials, descending under the order.
+std::vector<std::uint32_t> F4Engine::order_columns(const std::vector<char>& seen,
+                                                   std::vector<std::uint32_t>& column_of) const {
+    std::vector<std::uint32_t> monomials;
+    for (std::uint32_t m = 0; m < seen.size(); ++m) {
+        if (seen[m]) {
+            monomials.push_back(m);
+        }
+    }
+    std::sort(monomials.begin(), monomials.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return layout_.compare(table_.at(a), table_.at(b)) > 0;
+    });
+    column_of.assign(table_.size(), 0);
+    for (std::uint32_t c = 0; c < monomials.size(); ++c) {
+        column_of[monomials[c]] = c;
+    }
+    return monomials;
+}
+
+SparseRow F4Engine::to_sparse(const RowSpec& spec,
+                              const std::vector<std::uint32_t>& column_of) const {
+    SparseRow row;
+    row.columns.reserve(spec.monomials.size());
+    for (std::uint32_t m : spec.monomials) {
+        row.columns.push_back(column_of[m]);
+    }
+    row.coefficients = basis_[spec.element].poly.coefficients;
+    return row;
+}
+
+}  // namespace locus::algebra::modular::detail
