@@ -49,17 +49,18 @@ void print_modular_stats(const algebra::ModularStats& s) {
                                "left by the criteria reduces to zero"
                              : "NOT certified (--no-certify): the basis is probabilistic");
     if (s.certified) {
-        std::fprintf(stderr, "certification: %zu reduction steps", s.certify_steps);
-        if (s.certify_lanes > 0) {
+        const algebra::CertificationWork& work = s.certification;
+        std::fprintf(stderr, "certification: %zu reduction steps", work.reduction_steps);
+        if (work.lanes > 0) {
             std::fprintf(stderr,
                          " on residues modulo %zu primes (%s kernels; %zu reductions begun again "
                          "on more, %zu rebuilds in full)",
-                         s.certify_lanes, algebra::certification_kernels(), s.certify_restarts,
-                         s.certify_rebuilds);
+                         work.lanes, algebra::certification_kernels(), work.lane_restarts,
+                         work.rebuilds);
         }
         std::fprintf(stderr, "%s\n",
-                     s.certify_exact
-                         ? (s.certify_lanes > 0 ? ", then on GMP integers" : " on GMP integers")
+                     work.exact_fallback
+                         ? (work.lanes > 0 ? ", then on GMP integers" : " on GMP integers")
                          : "");
     }
 }

@@ -110,11 +110,7 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             }
         }
         const auto add_statistics = [&](const detail::ZeroReducer& r) {
-            const detail::ZeroReducer::Statistics st = r.statistics();
-            check.lanes = std::max(check.lanes, st.lanes);
-            check.lane_restarts += st.restarts;
-            check.rebuilds += st.rebuilds;
-            check.exact_fallback = check.exact_fallback || st.exact;
+            check.work += r.statistics();
         };
         auto pair_reduces = [&](detail::ZeroReducer& r, const detail::CriticalPair& pair,
                                 detail::ReductionCounts& pair_steps) {
@@ -167,7 +163,7 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             }
         }
         add_statistics(reducer);
-        check.reduction_steps = steps.steps;
+        check.work.reduction_steps = steps.steps;
         check.pairs_checked = failed < pairs.size() ? failed + 1 : pairs.size();
         if (failed < pairs.size()) {
             check.ok = false;
@@ -207,6 +203,15 @@ bool is_reduced(std::span<const Polynomial> basis) {
         }
     }
     return true;
+}
+
+CertificationWork& CertificationWork::operator+=(const CertificationWork& other) {
+    reduction_steps += other.reduction_steps;
+    lanes = std::max(lanes, other.lanes);
+    lane_restarts += other.lane_restarts;
+    rebuilds += other.rebuilds;
+    exact_fallback = exact_fallback || other.exact_fallback;
+    return *this;
 }
 
 }  // namespace locus::algebra

@@ -16,15 +16,24 @@
 
 namespace locus::algebra {
 
+// What certifying a basis cost (certify_groebner_basis; the modular algorithm reports the sum
+// over its attempts): reduction steps, the residue lanes it ended on (the most any thread
+// used), how often a reduction started again on more lanes, how often the pending values were
+// rebuilt in full (groebner/zero_reducer.h), and whether some reductions ran on GMP integers
+// (too large for lanes). The one record of this work: BasisCheck, ModularStats and the zero
+// reducers all use it.
+struct CertificationWork {
+    std::size_t reduction_steps = 0, lanes = 0, lane_restarts = 0, rebuilds = 0;
+    bool exact_fallback = false;
+    // Steps, restarts and rebuilds add up; lanes are the most used.
+    CertificationWork& operator+=(const CertificationWork& other);
+};
+
 struct BasisCheck {
     bool ok = true;
     std::size_t generators_checked = 0, pairs_checked = 0;
-    std::string failure;  // which generator or pair failed, when !ok
-    // certify_groebner_basis's work: reduction steps, and the residue lanes it ended on (the
-    // most any thread used), how often a reduction started again on more lanes, and how often
-    // the pending values were rebuilt in full (groebner/zero_reducer.h).
-    std::size_t reduction_steps = 0, lanes = 0, lane_restarts = 0, rebuilds = 0;
-    bool exact_fallback = false;  // some reductions ran on GMP integers (too large for lanes)
+    std::string failure;     // which generator or pair failed, when !ok
+    CertificationWork work;  // certify_groebner_basis only
 };
 
 // Every S-polynomial of `basis` reduces to zero.

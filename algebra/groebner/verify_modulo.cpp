@@ -93,7 +93,7 @@ BasisCheck check_groebner_basis_modulo(std::span<const Polynomial> basis_given,
     for (std::size_t i = 0; i < generators.size(); ++i) {
         ++check.generators_checked;
         if (!reduces_to_zero(residues(generators[i], p), basis, inverse_leads, p,
-                             check.reduction_steps, deadline)) {
+                             check.work.reduction_steps, deadline)) {
             check.ok = false;
             check.failure = "generator " + std::to_string(i + 1) + " (" + to_string(generators[i]) +
                             ") does not reduce to zero modulo " + std::to_string(p);
@@ -117,7 +117,8 @@ BasisCheck check_groebner_basis_modulo(std::span<const Polynomial> basis_given,
                                                mj.data(), basis[j]),
                          p);
             ++check.pairs_checked;
-            if (!reduces_to_zero(s, basis, inverse_leads, p, check.reduction_steps, deadline)) {
+            if (!reduces_to_zero(s, basis, inverse_leads, p, check.work.reduction_steps,
+                                 deadline)) {
                 check.ok = false;
                 check.failure = "the S-polynomial of elements " + std::to_string(i + 1) + " and " +
                                 std::to_string(j + 1) + " does not reduce to zero modulo " +

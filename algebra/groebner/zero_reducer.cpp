@@ -54,10 +54,15 @@ bool ZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t j,
     return exact().s_polynomial_reduces_to_zero(i, j, lcm, counts);
 }
 
-ZeroReducer::Statistics ZeroReducer::statistics() const {
+CertificationWork ZeroReducer::statistics() const {
     const ResidueZeroReducer::Statistics& r =
         residue_ ? residue_->statistics() : residue_statistics_;
-    return {residue_ ? r.lanes : 0, r.restarts, r.rebuilds, exact_ != nullptr};
+    CertificationWork work;
+    work.lanes = residue_ ? r.lanes : 0;
+    work.lane_restarts = r.restarts;
+    work.rebuilds = r.rebuilds;
+    work.exact_fallback = exact_ != nullptr;
+    return work;
 }
 
 }  // namespace locus::algebra::detail

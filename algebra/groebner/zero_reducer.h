@@ -18,6 +18,7 @@
 
 #include "algebra/groebner/exact_zero_reducer.h"
 #include "algebra/groebner/residue_zero_reducer.h"
+#include "algebra/groebner/verify.h"
 
 namespace locus::algebra::detail {
 
@@ -39,13 +40,9 @@ class ZeroReducer {
     bool s_polynomial_reduces_to_zero(std::size_t i, std::size_t j, const std::uint64_t* lcm,
                                       ReductionCounts& counts);
 
-    struct Statistics {
-        std::size_t lanes = 0;     // residues per integer at the end, 0 on GMP integers only
-        std::size_t restarts = 0;  // reductions begun again on more lanes
-        std::size_t rebuilds = 0;  // pending values rebuilt in full from their residues
-        bool exact = false;        // some reductions ran on GMP integers
-    };
-    Statistics statistics() const;
+    // Lanes at the end (0 on GMP integers only), restarts, rebuilds, and whether some reductions
+    // ran on GMP integers; reduction_steps are counted by the caller (ReductionCounts).
+    CertificationWork statistics() const;
 
   private:
     ExactZeroReducer& exact();

@@ -481,11 +481,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 const BasisCheck check =
                     certify_groebner_basis(candidate, inputs, options.deadline, options.threads);
                 s.certify_seconds += seconds_since(certify_start);
-                s.certify_steps += check.reduction_steps;
-                s.certify_lanes = std::max(s.certify_lanes, check.lanes);
-                s.certify_restarts += check.lane_restarts;
-                s.certify_rebuilds += check.rebuilds;
-                s.certify_exact = s.certify_exact || check.exact_fallback;
+                s.certification += check.work;
                 if (!check.ok) {
                     // Stable but wrong. Replays of an unlucky first prime would keep making
                     // the same wrong lift: start again from fresh F4 runs on more primes.
