@@ -185,7 +185,9 @@ FrameBuilder::Framing FrameBuilder::framing_of(const std::string& key,
     render::Surface surface;
     surface.equation = f.equation();
     scene.surfaces.push_back(surface);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::nanoseconds>(
+                              std::chrono::duration<double>(options_.limits.fit_seconds));
     const std::vector<algebra::CompiledPolynomial> one = {f};
     render::fit_clip_regions(scene, one, false, deadline);
     Framing framing{scene.surfaces[0].clip, true, render::default_camera(scene)};

@@ -37,6 +37,7 @@ struct ViewLimits {
     std::size_t max_parameters = 8;
     int max_image_side = 2048;
     double frame_seconds = 20.0;  // a frame that takes longer is stopped (a Timeout answer)
+    double fit_seconds = 5.0;     // fitting a new surface's clip region (a Timeout answer)
     int concurrent_renders = 2;
     int waiting_renders = 8;
 };
