@@ -260,8 +260,8 @@ void add_groebner_command(CLI::App& app, CommandContext& context) {
                "Buchberger's pair selection");
     add_choice(cmd, "--algorithm", args->algorithm,
                {{"auto",
-                 "the default: signature for up to 100 ms under degree orders, 1 ms "
-                 "under others, then modular"},
+                 "the default: modular for large systems (by Bezout's bound), else "
+                 "signature within a budget of work, then modular"},
                 {"buchberger", ""},
                 {"signature", "signature-based, over Q"},
                 {"f4", "the basis modulo --prime (the input's characteristic when it has one)"},

@@ -86,11 +86,12 @@ std::vector<Polynomial> unit_basis(const RingPtr& ring) {
 }  // namespace
 
 std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
-                                              std::size_t basis_size) {
+                                              std::size_t basis_size, std::size_t steps) {
     if (locus::deadline_passed(options.deadline)) {
         return GroebnerOutcome::stopped_timeout;
     }
-    if (options.max_basis_size != 0 && basis_size > options.max_basis_size) {
+    if ((options.max_basis_size != 0 && basis_size > options.max_basis_size) ||
+        (options.max_reduction_steps != 0 && steps >= options.max_reduction_steps)) {
         return GroebnerOutcome::stopped_size;
     }
     return std::nullopt;
@@ -146,7 +147,7 @@ GroebnerResult buchberger(std::span<const Polynomial> generators, const Groebner
     const ResolvedSelection selection = resolve_selection(options.selection, ring->order());
     std::size_t pairs_done = 0;
     while (!pairs.empty() && !unit) {
-        if (const auto stop = requested_stop(options, basis.size())) {
+        if (const auto stop = requested_stop(options, basis.size(), reduction.steps)) {
             result.outcome = *stop;
             break;
         }

@@ -76,6 +76,11 @@ struct GroebnerOptions {
     std::optional<std::chrono::steady_clock::time_point> deadline;
     // Stop (outcome stopped_size) when the basis would exceed this many elements; 0 = no limit.
     std::size_t max_basis_size = 0;
+    // Stop (outcome stopped_size) at the first S-pair (for the signature algorithm: signature)
+    // after this many reduction steps (GroebnerStats::reduction_steps); 0 = no limit. A budget
+    // of work rather than time, so that `auto`'s probe stops at the same point on every run and
+    // every machine.
+    std::size_t max_reduction_steps = 0;
     // Called after every S-pair with the state so far (for progress bars; throttle inside).
     std::function<void(const GroebnerProgress&)> progress;
     // For the multi-modular route of groebner_automatic: certify its result (false: the result
@@ -84,11 +89,12 @@ struct GroebnerOptions {
     int threads = 1;
 };
 
-// Whether a run must stop now under `options`, with `basis_size` elements: stopped_timeout once
-// the deadline has passed, stopped_size once the basis is past max_basis_size, else nothing.
-// Polled by buchberger() before each S-pair and by signature_groebner() before each signature.
+// Whether a run must stop now under `options`, with `basis_size` elements after `steps`
+// reduction steps: stopped_timeout once the deadline has passed, stopped_size once the basis is
+// past max_basis_size or the steps reach max_reduction_steps, else nothing. Polled by buchberger()
+// before each S-pair and by signature_groebner() before each signature.
 std::optional<GroebnerOutcome> requested_stop(const GroebnerOptions& options,
-                                              std::size_t basis_size);
+                                              std::size_t basis_size, std::size_t steps);
 
 struct GroebnerResult {
     // complete: normalized (print.h), monic, leading monomials ascending. Stopped early:

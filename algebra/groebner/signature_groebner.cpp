@@ -360,7 +360,7 @@ GroebnerResult SignatureRun::run(const GroebnerOptions& options, const RingPtr& 
     }
     std::size_t signatures_done = 0;
     while (!heap_.empty()) {
-        if (const auto stop = requested_stop(options, basis_.size())) {
+        if (const auto stop = requested_stop(options, basis_.size(), reduction_.steps)) {
             result.outcome = *stop;
             break;
         }

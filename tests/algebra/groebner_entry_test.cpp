@@ -3,6 +3,8 @@
 // outcome with a reason, not an exception.
 #include "algebra/groebner.h"
 
+#include "algebra/groebner/signature_groebner.h"
+
 #include <gtest/gtest.h>
 
 #include "algebra/error.h"
@@ -110,6 +112,47 @@ TEST(GroebnerEntry, AlgorithmNamesRoundTrip) {
     EXPECT_EQ(parse_algorithm("f4"), Algorithm::modular);
     EXPECT_FALSE(parse_algorithm("groebner").has_value());
     EXPECT_FALSE(parse_algorithm("").has_value());
+}
+
+}  // namespace
+}  // namespace locus::algebra
+
+namespace locus::algebra {
+namespace {
+
+// `auto` takes its route from the input's shape and a budget of reduction steps, never from
+// the clock: the same route on every run (the wall-clock probe sent katsura-9 either way by
+// the machine's load), and the small lex cases finish by signatures while the larger ones go
+// through the modular algorithm.
+TEST(GroebnerEntry, AutomaticRouteIsDecidedByShapeAndWork) {
+    const auto route = [](const std::string& name) {
+        const IdealFile ideal =
+            parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/" + name));
+        bool modular = false;
+        const GroebnerResult r = groebner_automatic(ideal.generators, {}, nullptr, &modular);
+        EXPECT_EQ(r.outcome, GroebnerOutcome::complete) << name;
+        return modular;
+    };
+    for (int run = 0; run < 3; ++run) {
+        EXPECT_FALSE(route("katsura4_lex.ideal"));
+        EXPECT_FALSE(route("cyclic4_lex.ideal"));
+        EXPECT_TRUE(route("cyclic5_lex.ideal"));
+        EXPECT_TRUE(route("katsura5_lex.ideal"));
+        EXPECT_FALSE(route("katsura8.ideal"));
+    }
+    EXPECT_TRUE(route("cyclic7.ideal"));  // Bézout 5040 times 7 variables: modular directly
+    // A budget of steps stops Buchberger and the signature algorithm alike, as stopped_size.
+    const IdealFile k =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura7.ideal"));
+    GroebnerOptions budget;
+    budget.max_reduction_steps = 100;
+    for (const bool signature : {false, true}) {
+        const GroebnerResult r =
+            signature ? signature_groebner(k.generators, budget) : buchberger(k.generators, budget);
+        EXPECT_EQ(r.outcome, GroebnerOutcome::stopped_size);
+        EXPECT_GE(r.stats.reduction_steps, 100u);
+        EXPECT_LT(r.stats.reduction_steps, 2000u);  // stopped at the next pair, not at the end
+    }
 }
 
 }  // namespace
