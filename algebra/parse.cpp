@@ -676,7 +676,13 @@ std::vector<GeneratorText> join_generator_lines(const std::vector<PendingLine>& 
     bool open = false;  // `current` has begun
     int depth = 0;
     const auto finish = [&] {
-        if (open && !trim(current.text).empty()) {
+        // Blank lines it ran over at its end are not part of it: an unclosed parenthesis is
+        // reported where the text ends, not on a line after it.
+        while (!current.text.empty() &&
+               std::isspace(static_cast<unsigned char>(current.text.back()))) {
+            current.text.pop_back();
+        }
+        if (open && !current.text.empty()) {
             out.push_back(current);
         }
         open = false;
@@ -741,6 +747,11 @@ IdealFile parse_ideal_file(std::string_view text) {
         std::size_t lead = 0;
         const std::string_view content = trim(raw, &lead);
         if (content.empty()) {
+            if (!generator_lines.empty()) {
+                // Kept (empty) among the generators: a generator continued past it keeps the
+                // line numbers of the file.
+                generator_lines.push_back({std::string_view{}, line_number, 1});
+            }
             continue;
         }
         const auto colon = content.find(':');

@@ -347,6 +347,8 @@ IdealFile parse_singular_input(std::string_view original) {
             std::vector<std::string> names = r.names({parts[1].begin + 1, parts[1].end - 1});
             MonomialOrder order = singular_order(r, parts[2], names.size());
             file.ring = PolyRing::make(std::move(names), std::move(order));
+        } else if (r.word_at(statement.begin, "qring")) {
+            r.fail(statement.begin, "a polynomial ring (quotient rings are not read)", "'qring'");
         } else if (r.word_at(statement.begin, "ideal")) {
             if (!file.ring) {
                 r.fail(statement.begin, "a 'ring' statement before the ideal", "'ideal'");
@@ -393,11 +395,17 @@ MonomialOrder macaulay2_order(const Reader& r, Span s, std::size_t n) {
             r.fail(s.begin + 9, "from 1 to " + std::to_string(n - 1) + " variables",
                    r.found_at(r.skip_space(s.begin + 9)));
         }
+        // GRevLex's rows after the all-ones row are −e_v for v = n−1 … 1; the one for v = k is
+        // then a combination of the rows before it (1 − w − e_{k+1} − … − e_{n−1} = e_k) and is
+        // left out, which keeps the matrix square and of full rank.
         std::vector<std::vector<std::int64_t>> rows;
         rows.emplace_back(n, 0);
         std::fill(rows[0].begin(), rows[0].begin() + k, 1);
         rows.emplace_back(n, 1);
-        for (std::size_t v = n - 1; v >= 1 && rows.size() < n; --v) {
+        for (std::size_t v = n - 1; v >= 1; --v) {
+            if (v == static_cast<std::size_t>(k)) {
+                continue;
+            }
             rows.emplace_back(n, 0);
             rows.back()[v] = -1;
         }
@@ -506,6 +514,9 @@ IdealFile parse_macaulay2_input(std::string_view original) {
         r.fail(text.size(), "a ring 'R = QQ[x,y,z]' (or ZZ/p[...])", "end of input");
     }
     const std::size_t ring_end = r.closing(bracket);
+    if (r.at(r.skip_space(ring_end)) == '/') {
+        r.fail(r.skip_space(ring_end), "a polynomial ring (quotient rings are not read)", "'/'");
+    }
     std::vector<std::string> names;
     std::optional<Span> order_value;
     for (const Span item : r.split_commas({bracket + 1, ring_end - 1})) {

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <map>
 #include <mutex>
+#include <set>
+#include <thread>
 
 #include "algebra/error.h"
 #include "algebra/print.h"
@@ -137,6 +139,10 @@ struct ViewServer::State {
     };
     std::mutex clients_mutex;
     std::map<std::string, std::shared_ptr<Client>> clients;
+    std::set<std::shared_ptr<std::atomic<bool>>> active;  // the flags of the work in flight
+    bool stopping = false;                                // guarded by clients_mutex
+    // run() and stop() (httplib's stop() does nothing before the server listens).
+    std::atomic<bool> stop_requested{false}, run_started{false}, run_done{false};
 
     // At most `concurrent_renders` at once, `waiting_renders` in line.
     std::mutex slots_mutex;
@@ -165,8 +171,13 @@ struct ViewServer::State {
             return false;
         }
         ++waiting;
-        slot_freed.wait(lock, [&] { return running < options.limits.concurrent_renders; });
+        slot_freed.wait(lock, [&] {
+            return running < options.limits.concurrent_renders || stop_requested.load();
+        });
         --waiting;
+        if (stop_requested.load()) {
+            return false;
+        }
         ++running;
         return true;
     }
@@ -192,38 +203,74 @@ struct ViewServer::State {
         answer(response, std::forward<Work>(work));
     }
 
-    void handle_render(const httplib::Request& request, httplib::Response& response) {
-        const Fields fields = fields_of(request);
+    // One piece of rendering work for a client: a newer one from the same client (the same
+    // `client` field) cancels it, the server's stop cancels every one, and it waits for its
+    // client's previous work to end and for a render slot. `work` gets the cancellation flag.
+    template <class Work>
+    void client_work(const Fields& fields, httplib::Response& response, Work&& work) {
         const std::string client_id = field(fields, "client").value_or("");
         std::shared_ptr<Client> client;
         auto cancel = std::make_shared<std::atomic<bool>>(false);
-        if (!client_id.empty()) {
+        {
             const std::lock_guard<std::mutex> lock(clients_mutex);
-            if (clients.size() > 1000) {
-                clients.clear();  // forget idle clients; bounded memory
+            if (stopping) {
+                send_error(response, 503, "stopping");
+                return;
             }
-            auto& entry = clients[client_id.substr(0, 64)];
-            if (!entry) {
-                entry = std::make_shared<Client>();
+            active.insert(cancel);
+            if (!client_id.empty()) {
+                if (clients.size() > 1000) {
+                    clients.clear();  // forget idle clients; bounded memory
+                }
+                auto& entry = clients[client_id.substr(0, 64)];
+                if (!entry) {
+                    entry = std::make_shared<Client>();
+                }
+                client = entry;
+                if (client->current) {
+                    client->current->store(true);  // the work in flight is no longer wanted
+                }
+                client->current = cancel;
             }
-            client = entry;
-            if (client->current) {
-                client->current->store(true);  // the frame in flight is no longer wanted
-            }
-            client->current = cancel;
         }
+        struct Unregister {
+            State* state;
+            std::shared_ptr<std::atomic<bool>> flag;
+            ~Unregister() {
+                const std::lock_guard<std::mutex> lock(state->clients_mutex);
+                state->active.erase(flag);
+            }
+        } unregister{this, cancel};
         std::unique_lock<std::mutex> own_turn;
         if (client) {
             own_turn = std::unique_lock<std::mutex>(client->busy);
         }
         if (cancel->load()) {
-            send_error(response, 409, "cancelled: a newer frame was asked for");
+            send_error(response, 409, "cancelled: newer work was asked for");
             return;
         }
-        answer_in_slot(response, [&] {
+        answer_in_slot(response, [&] { work(cancel.get()); });
+    }
+
+    // Cancels every render and refuses new ones (the server is stopping).
+    void cancel_everything() {
+        {
+            const std::lock_guard<std::mutex> lock(clients_mutex);
+            stopping = true;
+            for (const auto& flag : active) {
+                flag->store(true);
+            }
+        }
+        const std::lock_guard<std::mutex> lock(slots_mutex);
+        slot_freed.notify_all();
+    }
+
+    void handle_render(const httplib::Request& request, httplib::Response& response) {
+        const Fields fields = fields_of(request);
+        client_work(fields, response, [&](const std::atomic<bool>* cancel) {
             const Frame frame = builder.build(fields);
             render::RenderStats stats;
-            const render::RenderedImage image = render_frame(frame, cancel.get(), &stats, false);
+            const render::RenderedImage image = render_frame(frame, cancel, &stats, false);
             response.set_header("X-Locus-Seconds", number(stats.seconds));
             response.set_header("X-Locus-Hits", std::to_string(stats.hits));
             response.set_header("X-Locus-Undecided", std::to_string(stats.unknown));
@@ -238,15 +285,16 @@ struct ViewServer::State {
     // The frame's rays by the requested method against the certified one: pixels that one hits
     // and the other misses, or whose distances differ by more than 1e-6 relative.
     void handle_check(const httplib::Request& request, httplib::Response& response) {
-        answer_in_slot(response, [&] {
-            Frame frame = builder.build(fields_of(request));
+        const Fields fields = fields_of(request);
+        client_work(fields, response, [&](const std::atomic<bool>* cancel) {
+            Frame frame = builder.build(fields);
             frame.scene.options.shadows = false;
             render::RenderStats stats, reference_stats;
             const auto start = Clock::now();
-            const render::RenderedImage mine = render_frame(frame, nullptr, &stats, true);
+            const render::RenderedImage mine = render_frame(frame, cancel, &stats, true);
             frame.scene.options.method = render::TraceMethod::certified;
             const render::RenderedImage reference =
-                render_frame(frame, nullptr, &reference_stats, true);
+                render_frame(frame, cancel, &reference_stats, true);
             long wrong = 0;
             for (std::size_t i = 0; i < mine.depth.size(); ++i) {
                 const double a = mine.depth[i], b = reference.depth[i];
@@ -267,16 +315,21 @@ struct ViewServer::State {
 
     // The point under pixel (x, y): the frame's depth there along the pixel's ray.
     void handle_pick(const httplib::Request& request, httplib::Response& response) {
-        answer_in_slot(response, [&] {
-            const Fields fields = fields_of(request);
+        const Fields fields = fields_of(request);
+        client_work(fields, response, [&](const std::atomic<bool>* cancel) {
             Frame frame = builder.build(fields);
             frame.scene.options.shadows = false;
-            const auto x = std::stod(field(fields, "x").value_or("-1"));
-            const auto y = std::stod(field(fields, "y").value_or("-1"));
+            const auto coordinate = [&](const char* name) {
+                const std::string text = field(fields, name).value_or("");
+                char* end = nullptr;
+                const double v = std::strtod(text.c_str(), &end);
+                return end != text.c_str() && *end == '\0' ? v : -1.0;
+            };
+            const double x = coordinate("x"), y = coordinate("y");
             if (!(x >= 0 && x < frame.scene.width && y >= 0 && y < frame.scene.height)) {
                 throw RequestError{"x, y: expected a pixel of the image", "x"};
             }
-            const render::RenderedImage image = render_frame(frame, nullptr, nullptr, true);
+            const render::RenderedImage image = render_frame(frame, cancel, nullptr, true);
             const auto px = static_cast<std::size_t>(x), py = static_cast<std::size_t>(y);
             const double depth = image.depth[py * static_cast<std::size_t>(image.width) + px];
             if (!std::isfinite(depth)) {
@@ -363,6 +416,12 @@ struct ViewServer::State {
         server.set_payload_max_length(options.limits.max_body_bytes);
         // Frames are small and interactive: no Nagle delay on the answers.
         server.set_tcp_nodelay(true);
+        // Threads for every render and waiting render and some to spare, so that the page and
+        // the 503 answers are never stuck behind renders (httplib's default was 8 here).
+        const int threads = options.limits.concurrent_renders + options.limits.waiting_renders + 6;
+        server.new_task_queue = [threads] {
+            return new httplib::ThreadPool(static_cast<std::size_t>(threads));
+        };
         server.Get("/", [](const httplib::Request&, httplib::Response& r) {
             r.set_content(std::string(assets::index_html), "text/html; charset=utf-8");
         });
@@ -425,12 +484,29 @@ int ViewServer::bind() {
 }
 
 void ViewServer::run() {
-    state_->server.listen_after_bind();
+    State& s = *state_;
+    s.run_started = true;
+    if (!s.stop_requested) {
+        s.server.listen_after_bind();
+    }
+    s.run_done = true;
 }
 
 void ViewServer::stop() {
-    if (state_->server.is_running()) {
-        state_->server.stop();
+    State& s = *state_;
+    s.stop_requested = true;
+    s.cancel_everything();
+    // httplib's stop() only acts once the server listens: wait for that (or for run() to end,
+    // or never to be called) rather than lose a stop that came early.
+    for (int i = 0; i < 5000; ++i) {
+        if (s.server.is_running()) {
+            s.server.stop();
+            return;
+        }
+        if (!s.run_started || s.run_done) {
+            return;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
 }
 

@@ -142,8 +142,11 @@ def read_ideal(source):
     return Ideal(*_locus._read_ideal(text, bool(path and path.endswith(".ms"))))
 
 
-def verify(basis, generators, characteristic=0):
-    """(ok, why): is ``basis`` a reduced Gröbner basis, and do ``generators`` reduce to zero by it?"""
+def verify(basis, generators, characteristic=None):
+    """(ok, why): is ``basis`` a reduced Gröbner basis, and do ``generators`` reduce to zero by it?
+    Over GF(p) for a Basis computed there (or with ``characteristic=p``)."""
+    if characteristic is None:
+        characteristic = getattr(basis, "characteristic", 0)
     ring, polys = _polynomials(list(basis) + list(generators))
     n = len(basis)
     ok, why = _locus._verify(polys[:n], polys[n:], int(characteristic))

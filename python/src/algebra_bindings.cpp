@@ -14,6 +14,7 @@
 #include "algebra/groebner.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/ideal_ops.h"
+#include "algebra/monomial.h"
 #include "algebra/monomial_order.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
@@ -289,13 +290,21 @@ void bind_polynomial(py::module_& m) {
                  return f * (Rational(1) / divisor);
              })
         .def("__neg__", [](P f) { return -f; })
-        .def("__pow__",
-             [](P f, long k) {
-                 if (k < 0) {
-                     throw py::value_error("a polynomial power needs a non-negative exponent");
-                 }
-                 return f.pow(static_cast<unsigned>(k));
-             })
+        .def(
+            "__pow__",
+            [](P f, const py::int_& exponent) {
+                // Checked before any narrowing: 2**32 must not wrap to 0.
+                const py::int_ limit(algebra::MonomialLayout::max_field_value);
+                if (exponent < py::int_(0)) {
+                    throw py::value_error("a polynomial power needs a non-negative exponent");
+                }
+                if (exponent > limit) {
+                    throw py::value_error("an exponent of at most " +
+                                          std::to_string(algebra::MonomialLayout::max_field_value));
+                }
+                const auto k = exponent.cast<unsigned long>();
+                return run_interruptible([&] { return f.pow(static_cast<unsigned>(k)); });
+            })
         .def("__eq__",
              [](P f, const py::object& g) {
                  if (!py::isinstance<Polynomial>(g) && !is_number(g)) {
@@ -307,7 +316,15 @@ void bind_polynomial(py::module_& m) {
                  }
                  return f == as_polynomial(g, f.ring());
              })
-        .def("__hash__", [](P f) { return py::hash(py::str(algebra::to_string(f))); })
+        // A constant hashes as the number it equals (R(1) == 1, so their hashes agree).
+        .def("__hash__",
+             [](P f) {
+                 if (f.is_constant()) {
+                     return py::hash(f.is_zero() ? py::object(py::int_(0))
+                                                 : to_fraction(f.leading_coefficient()));
+                 }
+                 return py::hash(py::str(algebra::to_string(f)));
+             })
         .def("__bool__", [](P f) { return !f.is_zero(); })
         .def("__call__", &evaluate, "The exact value at a point (a float if any value is one).")
         .def(

@@ -10,6 +10,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <type_traits>
@@ -27,7 +28,14 @@ void bind_algebra(py::module_& m);
 void bind_implicit(py::module_& m);
 void bind_render(py::module_& m);
 
-// Raise the locus exception of that name (errors.cpp) from C++.
+// A bad argument of a binding call, raised as locus.InputError by the translator (errors.cpp).
+struct ArgumentError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Raise the locus exception of that name (errors.cpp) from C++. throw_input_error throws
+// ArgumentError and may be called anywhere; the others set the Python error and need the GIL:
+// only on the interpreter's thread, never inside run_interruptible's work.
 [[noreturn]] void throw_timeout(const std::string& message);
 [[noreturn]] void throw_resource_error(const std::string& message);
 [[noreturn]] void throw_verification_error(const std::string& message);

@@ -69,6 +69,8 @@ void bind_errors(py::module_& m) {
             error.attr("expected") = e.expected();
             error.attr("found") = e.found();
             PyErr_SetObject(parse_error_type, error.ptr());
+        } catch (const ArgumentError& e) {
+            raise(input_error_type, e.what());
         } catch (const InputError& e) {
             raise(input_error_type, e.what());
         } catch (const MixedRings& e) {
@@ -108,7 +110,9 @@ void bind_errors(py::module_& m) {
     throw_python(verification_error_type, message);
 }
 [[noreturn]] void throw_input_error(const std::string& message) {
-    throw_python(input_error_type, message);
+    // A C++ exception, translated when it reaches Python: safe on a worker thread without the
+    // GIL (PyErr_SetString there crashed locus.render with a bad size).
+    throw ArgumentError(message);
 }
 
 }  // namespace locus::python

@@ -36,6 +36,8 @@ def test_prime_characteristic(source_dir):
     basis = locus.groebner(ideal, characteristic=65521, check=True)
     assert basis.stats["characteristic"] == 65521 and not basis.stats["certified"]
     assert "x0+2*x1+2*x2+2*x3+2*x4+65520" in str(basis)
+    # verify() checks a basis over GF(p) in its own characteristic.
+    assert locus.verify(basis, ideal) == (True, "")
     with pytest.raises(locus.InputError):
         locus.groebner(ideal, characteristic=65521, algorithm="buchberger")
     with pytest.raises(locus.InputError):

@@ -70,6 +70,12 @@ def test_hostile_values_are_errors_not_crashes():
         x + locus.Ring("a,b").gens()[0]
     with pytest.raises(TypeError):
         x(1)
+    # Review regressions: the exponent was narrowed to 32 bits (x**2**32 gave 1).
+    with pytest.raises(ValueError):
+        x ** (2 ** 32)
+    with pytest.raises(ValueError):
+        (x + y) ** (2 ** 32 + 2)
+    assert hash(R(1)) == hash(1) and hash(R(0)) == hash(0)
 
 
 def test_sympy_round_trip_against_sympy_arithmetic():

@@ -44,6 +44,10 @@ def test_camera_and_methods():
     assert caught.value.column == 7
     with pytest.raises(locus.Error):
         locus.render(sphere, method="guess")
+    # Review regressions: these were raised on the worker thread without the GIL (a crash).
+    for bad in ({"size": (0, 4)}, {"size": (8, 8), "samples": 99}, {"size": (8, 8), "eye": (1, 2)}):
+        with pytest.raises(locus.InputError):
+            locus.render(sphere, **bad)
 
 
 def test_scene_file(source_dir):

@@ -124,6 +124,31 @@ TEST(SystemInput, ErrorsNameLineAndColumn) {
     EXPECT_EQ(position("R = ZZ/100[x]\nI = ideal(x)", false), "1:8");
 }
 
+// Review regressions: quotient rings were read as if the quotient's ideal were the input, and
+// Macaulay2's Eliminate k for k >= 2 built a singular matrix; a generator continued across a
+// blank or comment line reported its errors lines too early.
+TEST(SystemInput, ReviewRegressions) {
+    EXPECT_THROW(parse_macaulay2_input("R = QQ[x,y]/ideal(x^2-y)\nI = ideal(x^3-1)"), ParseError);
+    EXPECT_THROW(parse_singular_input("ring r=0,(x,y),dp;\nqring q = std(ideal(x^2-y));\n"
+                                      "ideal I = x^3-1;"),
+                 ParseError);
+    const IdealFile e = parse_macaulay2_input(
+        "R = QQ[t,s,x,y,z, MonomialOrder => Eliminate 2]\nI = ideal(x-t-s, y-t*s, z-t^2)");
+    EXPECT_EQ(e.ring->order().kind(), MonomialOrder::Kind::matrix);
+    // Every basis element free of t and s lies in the elimination ideal; there is one.
+    const auto basis = buchberger(e.generators).basis;
+    EXPECT_TRUE(std::any_of(basis.begin(), basis.end(), [](const Polynomial& g) {
+        return !g.contains_variable(0) && !g.contains_variable(1);
+    }));
+    try {
+        parse_ideal_file("vars: x,y\n(x +\n\n# note\ny $)\n");
+        FAIL();
+    } catch (const ParseError& error) {
+        EXPECT_EQ(error.line(), 5u);
+        EXPECT_EQ(error.column(), 3u);
+    }
+}
+
 TEST(SystemInput, DetectsEachFormat) {
     EXPECT_EQ(detect_ideal_format("# c\nvars: x\nx\n"), IdealFormat::ideal_file);
     EXPECT_EQ(detect_ideal_format("// c\n ring r=0,(x),dp; ideal I=x;"), IdealFormat::singular);

@@ -163,6 +163,31 @@ TEST_F(ViewServerTest, ANewerFrameCancelsTheOneInFlight) {
     EXPECT_LT(seconds, 5.0);
 }
 
+TEST_F(ViewServerTest, MalformedPickCoordinatesAreBadRequests) {
+    for (const char* x : {"abc", "1e999", "", "-3"}) {
+        const auto r = client().Post("/api/pick", httplib::Params{{"equation", "x^2+y^2+z^2-1"},
+                                                                  {"width", "16"},
+                                                                  {"height", "16"},
+                                                                  {"x", x},
+                                                                  {"y", "3"}});
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->status, 400) << x << " " << r->body;
+    }
+}
+
+// A stop that comes before the server listens (--timeout 0.00001, an early Ctrl-C) is kept:
+// run() returns at once instead of serving on.
+TEST(ViewServerStop, AStopBeforeRunIsNotLost) {
+    ViewOptions options;
+    options.port = 0;
+    ViewServer server(options);
+    server.bind();
+    server.stop();
+    const auto start = std::chrono::steady_clock::now();
+    server.run();
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+}
+
 TEST_F(ViewServerTest, ImplicitizeAndPick) {
     const auto r = client().Post(
         "/api/implicitize", httplib::Params{{"param", "params: s,t\nx = s\ny = t\nz = s^2+t^2\n"}});
