@@ -722,8 +722,8 @@ std::vector<GeneratorText> join_generator_lines(const std::vector<PendingLine>& 
         }
         const std::string_view tail = open ? trim(current.text) : std::string_view{};
         const bool continues =
-            depth > 0 || (!tail.empty() && std::string_view("+-*/^").find(tail.back()) !=
-                                               std::string_view::npos);
+            depth > 0 || (!tail.empty() &&
+                          std::string_view("+-*/^").find(tail.back()) != std::string_view::npos);
         if (!continues) {
             finish();
             depth = 0;

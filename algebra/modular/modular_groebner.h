@@ -66,8 +66,8 @@ GroebnerResult modular_groebner(std::span<const Polynomial> generators,
 // degree orders (Bézout's bound times the number of variables above 4500), else the
 // signature-based algorithm (signature_groebner.h) within a budget of reduction steps (80 000
 // under degree orders, 300 under the others), then the multi-modular one. No wall-clock probe:
-// the route is the same on every run. `options.deadline` bounds the whole; `used_modular` tells which
-// answered. The signature algorithm falls back to Buchberger where its signatures overflow
+// the route is the same on every run. `options.deadline` bounds the whole; `used_modular` tells
+// which answered. The signature algorithm falls back to Buchberger where its signatures overflow
 // (signature_groebner_or_buchberger).
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options = {},

@@ -17,9 +17,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     // Format detection runs on everything, as `locus groebner -` runs it.
     (void)locus::algebra::detect_ideal_format(*text);
-    for (const auto parse : {locus::algebra::parse_ideal_file, locus::algebra::parse_msolve_file,
-                             locus::algebra::parse_singular_input,
-                             locus::algebra::parse_macaulay2_input}) {
+    for (const auto parse :
+         {locus::algebra::parse_ideal_file, locus::algebra::parse_msolve_file,
+          locus::algebra::parse_singular_input, locus::algebra::parse_macaulay2_input}) {
         try {
             const locus::algebra::IdealFile file = parse(*text);
             if (file.generators.size() != file.generator_lines.size()) {
