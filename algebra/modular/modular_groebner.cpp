@@ -560,8 +560,11 @@ double bezout_bound(std::span<const Polynomial> generators) {
 // 2.9 s; 5120) and cyclic-7 (2.1 s against 0.47 s; 35280). So under degree orders B·n > 4500
 // goes to the modular algorithm directly, and below it the signature algorithm runs with a
 // budget of 80 000 reduction steps (katsura-9 needs 60 896), past which the modular one takes
-// over. Under lex and elimination orders FGLM wins on zero-dimensional ideals (katsura5_lex
-// 1.6 ms against 11 ms), while the small suite cases finish by signatures in 3 to 149
+// over. The rule is a compromise: eco-10 (0.33 s by signatures, 0.62 s modular) and noon-7
+// (0.10 s against 0.36 s) are large by B·n but easy for signatures, and neither a budget of
+// steps alone (cyclic-7 spent 1 s in it) nor the size of a basis modulo p separates them from
+// katsura-10 and cyclic-7. Under lex and elimination orders FGLM wins on zero-dimensional ideals
+// (katsura5_lex 1.6 ms against 11 ms), while the small suite cases finish by signatures in 3 to 149
 // reduction steps: a budget of 300.
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options, ModularStats* stats,
