@@ -321,9 +321,11 @@ def _image_class():
     import numpy
 
     class Image(numpy.ndarray):
-        """An H×W×3 uint8 sRGB picture (a NumPy array) that Jupyter shows inline; ``.depth`` is
-        the distance to the first hit per pixel (inf on a miss), ``.stats`` the frame's figures
-        (seconds, rays, hits, undecided rays, the camera used)."""
+        """An H×W×3 uint8 sRGB picture (a NumPy array) that Jupyter shows inline. The float
+        AOVs of ``locus render --aov``: ``.depth`` (H×W, the distance to the first hit, inf on a
+        miss), ``.normal`` (H×W×3 unit normals, zero on a miss), ``.work`` (H×W, the root
+        finders' work per pixel) and ``.linear`` (H×W×3 linear colour before sRGB); ``.stats``
+        the frame's figures (seconds, rays, hits, undecided rays, the camera used)."""
 
         def _repr_png_(self):
             return _png(numpy.ascontiguousarray(self, dtype=numpy.uint8))
@@ -334,8 +336,8 @@ def _image_class():
                 f.write(self._repr_png_())
 
         def __array_finalize__(self, obj):
-            self.depth = getattr(obj, "depth", None)
-            self.stats = getattr(obj, "stats", None)
+            for name in ("depth", "normal", "work", "linear", "stats"):
+                setattr(self, name, getattr(obj, name, None))
 
     return Image
 
@@ -367,11 +369,14 @@ def render(source, size=(512, 512), eye=None, target=None, up=None, fov=None, me
         Image = _image_class()
     width, height = size
     vec = lambda v: None if v is None else [float(c) for c in v]
-    rgb, depth, stats = _locus._render(str(source), _source_kind(source), int(width), int(height),
-                                       vec(eye), vec(target), vec(up), fov, method, samples,
-                                       shadows, int(threads), timeout)
+    rgb, depth, stats, aovs = _locus._render(str(source), _source_kind(source), int(width),
+                                             int(height), vec(eye), vec(target), vec(up), fov,
+                                             method, samples, shadows, int(threads), timeout)
     image = rgb.view(Image)
     image.depth = depth
+    image.linear = aovs["linear"]
+    image.normal = aovs["normal"]
+    image.work = aovs["work"]
     image.stats = stats
     return image
 

@@ -134,6 +134,14 @@ py::tuple render_surface(const RenderRequest& request, std::optional<double> tim
     auto pixels = rgb.mutable_unchecked<3>();
     py::array_t<float> depth({h, w});
     auto distances = depth.mutable_unchecked<2>();
+    // The other AOVs, as `locus render --aov` writes them: linear colour, unit normals (zero on
+    // a miss), and the root finders' work per pixel.
+    py::array_t<float> linear({h, w, py::ssize_t{3}});
+    py::array_t<float> normal({h, w, py::ssize_t{3}});
+    py::array_t<float> work({h, w});
+    auto linear_pixels = linear.mutable_unchecked<3>();
+    auto normals = normal.mutable_unchecked<3>();
+    auto works = work.mutable_unchecked<2>();
     for (py::ssize_t y = 0; y < h; ++y) {
         for (py::ssize_t x = 0; x < w; ++x) {
             const std::size_t i = static_cast<std::size_t>(y * w + x);
@@ -143,6 +151,12 @@ py::tuple render_surface(const RenderRequest& request, std::optional<double> tim
             }
             distances(y, x) =
                 image.depth.empty() ? std::numeric_limits<float>::infinity() : image.depth[i];
+            for (py::ssize_t c = 0; c < 3; ++c) {
+                const std::size_t k = 3 * i + static_cast<std::size_t>(c);
+                linear_pixels(y, x, c) = image.color[k];
+                normals(y, x, c) = image.normal.empty() ? 0.0f : image.normal[k];
+            }
+            works(y, x) = image.work.empty() ? 0.0f : image.work[i];
         }
     }
     py::dict stats;
@@ -155,7 +169,11 @@ py::tuple render_surface(const RenderRequest& request, std::optional<double> tim
         py::arg("eye") = py::make_tuple(c.eye.x, c.eye.y, c.eye.z),
         py::arg("target") = py::make_tuple(c.target.x, c.target.y, c.target.z),
         py::arg("up") = py::make_tuple(c.up.x, c.up.y, c.up.z), py::arg("fov") = c.fov_degrees);
-    return py::make_tuple(rgb, depth, stats);
+    py::dict aovs;
+    aovs["linear"] = linear;
+    aovs["normal"] = normal;
+    aovs["work"] = work;
+    return py::make_tuple(rgb, depth, stats, aovs);
 }
 
 // First hits of rays o + t·d, t in (0, t_max]: t (NaN where there is none) and a status per ray

@@ -16,6 +16,12 @@ def test_render_is_an_image_with_depth_and_png():
     assert image.stats["hits"] > 500 and image.stats["undecided"] == 0
     assert len(np.unique(image.reshape(-1, 3), axis=0)) > 20  # shaded, not flat
     assert np.isinf(image.depth[0, 0]) and np.isfinite(image.depth[32, 48])
+    # The float AOVs: unit normals where the surface is hit, zero elsewhere; work where hit.
+    lengths = np.linalg.norm(image.normal, axis=2)
+    hit = np.isfinite(image.depth)
+    assert np.allclose(lengths[hit], 1.0, atol=1e-4) and (lengths[~hit] == 0).all()
+    assert image.linear.dtype == np.float32 and image.linear.shape == (64, 96, 3)
+    assert (image.work[hit] > 0).all()
     png = image._repr_png_()
     assert png.startswith(b"\x89PNG\r\n\x1a\n")
     # The IDAT stream decodes back to the same rows (filter byte 0 each).
