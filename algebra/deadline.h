@@ -1,36 +1,64 @@
-// When long work must stop: at its deadline, or at once when the process asked every computation
-// to stop (the Python bindings do on Ctrl-C, from the thread that waits for the work). Every
-// loop that polls a deadline polls it through deadline_passed, so one flag reaches Buchberger,
-// F4, the certification, implicitization and the renderer alike.
+// When long work must stop: at its deadline, or at once when whoever gave that deadline
+// cancels it (the Python bindings do on Ctrl-C, from the thread that waits for the work). Every
+// loop that polls a deadline polls it through deadline_passed, so a cancellation reaches
+// Buchberger, F4, the certification, implicitization and the renderer alike, on whichever
+// threads they run.
 //
-// The interrupt is process-wide, like SIGINT itself, and is only seen by work that has a
-// deadline: a caller that wants to be interruptible without a time limit gives a distant one.
+// A cancellable deadline is an instant made unique to its caller and registered with a flag:
+// every copy of it, in every thread, then reads that flag. Other computations, with other
+// deadlines, are not affected. Work without a deadline cannot be cancelled: a caller that wants
+// to be without a time limit gives a distant one.
 #pragma once
 
 #include <atomic>
 #include <chrono>
+#include <map>
+#include <mutex>
 #include <optional>
 
 namespace locus {
 
 namespace detail {
-inline std::atomic<bool> interrupt_requested{false};
+struct CancellableDeadlines {
+    std::mutex mutex;
+    std::map<std::chrono::steady_clock::time_point, const std::atomic<bool>*> flags;
+    std::atomic<std::size_t> count{0};  // read without the lock: most polls find none
+};
+inline CancellableDeadlines cancellable_deadlines;
 }  // namespace detail
 
-// Ask every computation with a deadline to stop at its next poll, as if its deadline had
-// passed; cleared by clear_interrupt once the interrupted work has returned.
-inline void request_interrupt() {
-    detail::interrupt_requested.store(true, std::memory_order_relaxed);
+// Registers `cancelled` for the returned instant: `deadline`, or the first nanosecond after it
+// that no other registration holds. Work given that instant stops at its next poll once
+// `cancelled` is true. Unregister with forget_cancellable_deadline when the work has returned.
+inline std::chrono::steady_clock::time_point cancellable_deadline(
+    std::chrono::steady_clock::time_point deadline, const std::atomic<bool>* cancelled) {
+    detail::CancellableDeadlines& d = detail::cancellable_deadlines;
+    const std::lock_guard<std::mutex> lock(d.mutex);
+    while (d.flags.count(deadline) != 0) {
+        deadline += std::chrono::nanoseconds(1);
+    }
+    d.flags.emplace(deadline, cancelled);
+    d.count.store(d.flags.size(), std::memory_order_relaxed);
+    return deadline;
 }
-inline void clear_interrupt() {
-    detail::interrupt_requested.store(false, std::memory_order_relaxed);
-}
-inline bool interrupt_requested() {
-    return detail::interrupt_requested.load(std::memory_order_relaxed);
+
+inline void forget_cancellable_deadline(std::chrono::steady_clock::time_point deadline) {
+    detail::CancellableDeadlines& d = detail::cancellable_deadlines;
+    const std::lock_guard<std::mutex> lock(d.mutex);
+    d.flags.erase(deadline);
+    d.count.store(d.flags.size(), std::memory_order_relaxed);
 }
 
 inline bool deadline_passed(std::chrono::steady_clock::time_point deadline) {
-    return interrupt_requested() || std::chrono::steady_clock::now() >= deadline;
+    detail::CancellableDeadlines& d = detail::cancellable_deadlines;
+    if (d.count.load(std::memory_order_relaxed) != 0) {
+        const std::lock_guard<std::mutex> lock(d.mutex);
+        const auto it = d.flags.find(deadline);
+        if (it != d.flags.end() && it->second->load(std::memory_order_relaxed)) {
+            return true;
+        }
+    }
+    return std::chrono::steady_clock::now() >= deadline;
 }
 
 inline bool deadline_passed(const std::optional<std::chrono::steady_clock::time_point>& deadline) {

@@ -54,13 +54,20 @@ bool is_number(const py::handle& value);
 py::object to_fraction(const algebra::Rational& value);
 
 // The deadline of a call: `timeout` seconds from now, or a distant one when there is none, so
-// that the work still polls and Ctrl-C (algebra/deadline.h) reaches it.
+// that the work still polls. It is a cancellable deadline (algebra/deadline.h) registered for
+// this thread's current call, which run_interruptible cancels on Ctrl-C: only this call stops,
+// not the other threads' calls.
 std::chrono::steady_clock::time_point deadline_after(std::optional<double> timeout);
 
+// The current call's cancellation flag (null before deadline_after), and the end of the call
+// (its deadline's registration is forgotten).
+std::atomic<bool>* current_call_flag();
+void end_current_call();
+
 // Runs `work` on a thread of its own with the GIL released while this thread checks for
-// signals every 20 ms. On Ctrl-C it interrupts the work (request_interrupt), waits for it to
-// return, and raises KeyboardInterrupt; otherwise returns the work's result or rethrows its
-// exception. `work` must not touch Python objects.
+// signals every 20 ms. On Ctrl-C it cancels the call's deadline (deadline_after), waits for the
+// work to return, and raises KeyboardInterrupt; otherwise returns the work's result or rethrows
+// its exception. `work` must not touch Python objects.
 template <class Work>
 std::invoke_result_t<Work&> run_interruptible(Work&& work) {
     using Result = std::invoke_result_t<Work&>;
@@ -95,15 +102,17 @@ std::invoke_result_t<Work&> run_interruptible(Work&& work) {
                 interrupted = PyErr_CheckSignals() != 0;
             }
             if (interrupted) {
-                request_interrupt();
+                if (std::atomic<bool>* flag = current_call_flag()) {
+                    flag->store(true);
+                }
             }
             lock.lock();
         }
         lock.unlock();
         worker.join();
     }
+    end_current_call();
     if (interrupted) {
-        clear_interrupt();
         throw py::error_already_set();
     }
     if (failure) {

@@ -2,6 +2,8 @@
 // registration of every binding file, and the conversions they share.
 #include <pybind11/pybind11.h>
 
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "python/src/bindings.h"
@@ -58,6 +60,28 @@ py::object to_fraction(const algebra::Rational& value) {
     return fraction(numerator, denominator);
 }
 
+namespace {
+
+// The call in progress on this (Python) thread: its flag and registered deadline.
+struct CurrentCall {
+    std::unique_ptr<std::atomic<bool>> flag;
+    std::optional<std::chrono::steady_clock::time_point> registered;
+};
+thread_local CurrentCall current_call;
+
+}  // namespace
+
+std::atomic<bool>* current_call_flag() {
+    return current_call.flag.get();
+}
+
+void end_current_call() {
+    if (current_call.registered) {
+        forget_cancellable_deadline(*current_call.registered);
+        current_call.registered.reset();
+    }
+}
+
 std::chrono::steady_clock::time_point deadline_after(std::optional<double> timeout) {
     const auto now = std::chrono::steady_clock::now();
     // Ten years stands for no limit: far enough, and far from the clock's range.
@@ -65,8 +89,13 @@ std::chrono::steady_clock::time_point deadline_after(std::optional<double> timeo
     if (!(seconds >= 0.0) || !std::isfinite(seconds)) {
         throw_input_error("timeout: expected a non-negative number of seconds, or None");
     }
-    return now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                     std::chrono::duration<double>(std::min(seconds, 10.0 * 365 * 86400)));
+    end_current_call();  // a call that set a deadline and never ran
+    current_call.flag = std::make_unique<std::atomic<bool>>(false);
+    current_call.registered = cancellable_deadline(
+        now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  std::chrono::duration<double>(std::min(seconds, 10.0 * 365 * 86400))),
+        current_call.flag.get());
+    return *current_call.registered;
 }
 
 }  // namespace locus::python

@@ -68,3 +68,39 @@ def test_the_gil_is_released(source_dir):
     # Python ran beside the computation: ticks spread over it, not only after it.
     during = [t for t in ticks if start < t < start + elapsed]
     assert elapsed < 0.05 or len(during) >= 3
+
+
+OTHER_THREAD = textwrap.dedent("""
+    import os, signal, sys, threading, time
+    import locus
+    source = sys.argv[1]
+    other = {}
+    def work():
+        try:
+            for _ in range(3):
+                locus.groebner(locus.read_ideal(source + "/bench/data/katsura9.ideal"))
+            other["result"] = "done"
+        except Exception as e:
+            other["result"] = type(e).__name__
+    helper = threading.Thread(target=work)
+    helper.start()
+    threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+    try:
+        locus.groebner(locus.read_ideal(source + "/bench/data/cyclic7.ideal"),
+                       algorithm="buchberger")
+        print("main finished")
+    except KeyboardInterrupt:
+        print("main interrupted")
+    helper.join()
+    print("other", other["result"])
+""")
+
+
+def test_ctrl_c_stops_only_the_main_threads_call(source_dir):
+    # Each call's deadline is its own cancellable one (algebra/deadline.h): Ctrl-C stops the
+    # main thread's call, and a call in another thread runs to its end.
+    result = subprocess.run([sys.executable, "-c", OTHER_THREAD, str(source_dir)],
+                            capture_output=True, text=True, timeout=120, env=dict(os.environ))
+    lines = result.stdout.split("\n")
+    assert "main interrupted" in lines, result.stdout + result.stderr
+    assert "other done" in lines, result.stdout + result.stderr
