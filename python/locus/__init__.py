@@ -28,6 +28,9 @@ __all__ = [
     "FORMATS", "TRACE_METHODS",
 ]
 
+# Jupyter shows polynomials as LaTeX.
+Polynomial._repr_latex_ = lambda self: "$%s$" % self.format("latex")
+
 FORMATS = ("normalized", "singular", "macaulay2", "latex", "msolve", "sympy", "maple",
            "mathematica")
 TRACE_METHODS = tuple(_locus._trace_methods())

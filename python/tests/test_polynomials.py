@@ -21,6 +21,11 @@ def test_arithmetic_is_exact():
     assert (x * x)(0.1, 0, 0) == float(Fraction(0.1) ** 2)
 
 
+def test_jupyter_shows_latex():
+    R = locus.Ring("x,y_1")
+    assert R("x^2/3 + y_1")._repr_latex_() == "$\\frac{1}{3} x^{2}+y_{1}$"
+
+
 def test_diff_subs_terms():
     R = locus.Ring(["s", "t"], order="lex")
     s, t = R.gens()
