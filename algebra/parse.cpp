@@ -738,7 +738,7 @@ std::vector<GeneratorText> join_generator_lines(const std::vector<PendingLine>& 
 IdealFile parse_ideal_file(std::string_view text) {
     IdealFile file;
     std::vector<std::string> names;
-    bool have_vars = false;
+    bool have_vars = false, have_characteristic = false;
     std::string order_text = "grevlex";
     std::size_t order_line = 0, order_column = 0;
     std::vector<PendingLine> generator_lines;
@@ -774,7 +774,14 @@ IdealFile parse_ideal_file(std::string_view text) {
                 order_line = line_number;
                 order_column = value_column;
             } else if (key == "characteristic") {
+                // A second line is refused, not taken: which of two primes was meant is not
+                // for the reader to guess (it once silently used the last).
+                if (have_characteristic) {
+                    throw ParseError(line_number, lead + 1, "one 'characteristic:' line",
+                                     "a second one");
+                }
                 file.characteristic = parse_characteristic(value, line_number, value_column);
+                have_characteristic = true;
             } else {
                 throw ParseError(line_number, lead + 1,
                                  "'vars:', 'order:', 'characteristic:' or a generator",

@@ -125,6 +125,8 @@ TEST(Parse, MalformedIdealFiles) {
         {"vars: x,y\ncolour: red\n", 2, 1, "'vars:', 'order:', 'characteristic:' or a generator"},
         {"vars: x,y\nx^2+y\n  x*(y+1\n", 3, 9, "')' to close"},
         {"vars: x,y\nx^2+u\n", 2, 5, "a declared variable"},
+        {"vars: x,y\ncharacteristic: 7\ncharacteristic: 11\nx\n", 3, 1,
+         "one 'characteristic:' line"},
     };
     for (const auto& c : cases) {
         expect_parse_error(c, [&] { parse_ideal_file(c.text); });
