@@ -65,10 +65,10 @@ void print_modular_stats(const algebra::ModularStats& s) {
     }
 }
 
-void print_stats(const algebra::GroebnerResult& r, const algebra::PolyRing& ring) {
-    const auto& s = r.stats;
+void print_stats(const algebra::GroebnerAnswer& answer, const algebra::PolyRing& ring) {
+    const auto& s = answer.stats;
     std::fprintf(stderr, "order: %s\nbasis size: %zu\npairs created: %zu\n",
-                 ring.order().to_string(ring.variable_names()).c_str(), r.basis.size(),
+                 ring.order().to_string(ring.variable_names()).c_str(), answer.basis.size(),
                  s.pairs_created);
     if (s.algorithm == algebra::GroebnerAlgorithm::signature) {
         std::fprintf(stderr, "removed as syzygies: %zu\nremoved by rewriting: %zu\n",
@@ -103,7 +103,7 @@ void print_answer_stats(const algebra::GroebnerAnswer& answer, const algebra::Po
                  : algorithm == algebra::GroebnerAlgorithm::signature
                      ? "signature (SB, Schreyer order)"
                      : "buchberger");
-    print_stats({answer.basis, answer.outcome, answer.reason, answer.stats}, ring);
+    print_stats(answer, ring);
     if (answer.modular) {
         print_modular_stats(*answer.modular);
     }
@@ -216,7 +216,7 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     }
     if (answer.outcome == algebra::GroebnerOutcome::stopped_timeout) {
         if (args.stats && !answer.f4) {
-            print_stats({answer.basis, answer.outcome, answer.reason, answer.stats}, *ideal.ring);
+            print_stats(answer, *ideal.ring);
         }
         if (answer.f4) {
             throw CommandFailure(exit_timeout,

@@ -180,25 +180,19 @@ class _IdealOperations:
         ring, polys = _polynomials(list(i) + list(j), vars, order)
         return ring, polys[:len(i)], polys[len(i):]
 
-    def sum(self, i, j, vars=None, order=None, timeout=None):
-        ring, a, b = self._two(i, j, vars, order)
-        return Basis(_locus._ideal_sum(a, b, timeout), ring)
+    def _basis_of_two(operation, doc):
+        def method(self, i, j, vars=None, order=None, timeout=None):
+            ring, a, b = self._two(i, j, vars, order)
+            return Basis(operation(a, b, timeout), ring)
+        method.__doc__ = doc
+        return method
 
-    def product(self, i, j, vars=None, order=None, timeout=None):
-        ring, a, b = self._two(i, j, vars, order)
-        return Basis(_locus._ideal_product(a, b, timeout), ring)
-
-    def intersect(self, i, j, vars=None, order=None, timeout=None):
-        ring, a, b = self._two(i, j, vars, order)
-        return Basis(_locus._ideal_intersection(a, b, timeout), ring)
-
-    def quotient(self, i, j, vars=None, order=None, timeout=None):
-        ring, a, b = self._two(i, j, vars, order)
-        return Basis(_locus._ideal_quotient(a, b, timeout), ring)
-
-    def saturate(self, i, j, vars=None, order=None, timeout=None):
-        ring, a, b = self._two(i, j, vars, order)
-        return Basis(_locus._saturation(a, b, timeout), ring)
+    sum = _basis_of_two(_locus._ideal_sum, "I + J")
+    product = _basis_of_two(_locus._ideal_product, "I·J")
+    intersect = _basis_of_two(_locus._ideal_intersection, "I ∩ J")
+    quotient = _basis_of_two(_locus._ideal_quotient, "I : J")
+    saturate = _basis_of_two(_locus._saturation, "I : J^∞")
+    del _basis_of_two
 
     def eliminate(self, i, variables, vars=None, order=None, timeout=None):
         """I ∩ Q[the other variables]; ``variables``: names ('t' or ['s', 't']) or polynomials."""

@@ -49,7 +49,8 @@ def test_ctrl_c_stops_the_work(source_dir, which):
 
 
 def test_the_gil_is_released(source_dir):
-    ideal = locus.read_ideal(str(source_dir / "bench/data/katsura7.ideal"))
+    # katsura-8 by Buchberger: about 0.2 s, long enough for the other thread to tick.
+    ideal = locus.read_ideal(str(source_dir / "bench/data/katsura8.ideal"))
     ticks = []
     stop = threading.Event()
 
@@ -67,7 +68,7 @@ def test_the_gil_is_released(source_dir):
     thread.join()
     # Python ran beside the computation: ticks spread over it, not only after it.
     during = [t for t in ticks if start < t < start + elapsed]
-    assert elapsed < 0.05 or len(during) >= 3
+    assert len(during) >= 3, "%d ticks in %.3f s" % (len(during), elapsed)
 
 
 OTHER_THREAD = textwrap.dedent("""
