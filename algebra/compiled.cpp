@@ -189,64 +189,49 @@ Point3 CompiledPolynomial::gradient(const Point3& p) const {
     return {even_x + odd_x, even_y + odd_y, even_z + odd_z};
 }
 
-namespace {
-
-// A double with a bound on its error (midpoint-radius arithmetic: for z = x·y,
-// e_z = |x|·e_y + (|y| + e_y)·e_x + u·|z|; for z = x + y, e_z = e_x + e_y + u·|z|).
-struct Ball {
-    double v, r;
-};
-inline Ball times(const Ball& a, const Ball& b) {
-    const double p = a.v * b.v;
-    return {p, std::abs(a.v) * b.r + (std::abs(b.v) + b.r) * a.r + 0x1.0p-53 * std::abs(p)};
-}
-inline void add_to(Ball& acc, const Ball& a) {
-    acc.v += a.v;
-    acc.r += a.r + 0x1.0p-53 * std::abs(acc.v);
-}
-
-}  // namespace
-
 ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& direction,
                                                    double t, Precision precision) const {
     if (precision == Precision::double_precision) {
-        // The point rounded once (an FMA), then every operation's rounding added to the
-        // radius as it happens; the radii, rounded to nearest themselves, are inflated by
-        // (1 + 2γ_N) at the end (each is a sum of products of positive numbers reached by at
-        // most N roundings), and the coefficients' own error adds ρ·Σ|terms|.
-        std::array<Ball, 3> point;
+        // The point rounded once (an FMA), the value in doubles beside Σ|terms| (the
+        // magnitudes of the same products). Each term meets at most N = double_double_depth_
+        // roundings — the point's, the powers', its products and the sums it enters — so the
+        // value errs by at most γ_N·Σ|terms| (Higham, "Accuracy and Stability of Numerical
+        // Algorithms", §3.1) and the coefficients' own rounding adds ρ·Σ|terms|. Σ|terms| is
+        // itself rounded N + degree times at most: (1 + 4(N + degree)u) covers it.
+        std::array<double, 3> point, magnitude;
         for (int axis = 0; axis < 3; ++axis) {
-            const double x = std::fma(t, direction[axis], origin[axis]);
-            point[axis] = {x, 0x1.0p-53 * std::abs(x) * (1.0 + 0x1.0p-50) + 0x1.0p-1074};
+            point[axis] = std::fma(t, direction[axis], origin[axis]);
+            magnitude[axis] = std::abs(point[axis]);
         }
-        using Powers = std::array<Ball, kMaxCompiledDegree + 1>;
-        Powers xs, ys, zs;
-        xs[0] = ys[0] = zs[0] = {1.0, 0.0};
+        using Powers = std::array<double, kMaxCompiledDegree + 1>;
+        Powers xs, ys, zs, axs, ays, azs;
+        xs[0] = ys[0] = zs[0] = axs[0] = ays[0] = azs[0] = 1.0;
         for (int k = 1; k <= degree_; ++k) {
-            xs[k] = times(xs[k - 1], point[0]);
-            ys[k] = times(ys[k - 1], point[1]);
-            zs[k] = times(zs[k - 1], point[2]);
+            xs[k] = xs[k - 1] * point[0];
+            ys[k] = ys[k - 1] * point[1];
+            zs[k] = zs[k - 1] * point[2];
+            axs[k] = axs[k - 1] * magnitude[0];
+            ays[k] = ays[k - 1] * magnitude[1];
+            azs[k] = azs[k - 1] * magnitude[2];
         }
-        Ball sum{0.0, 0.0};
-        double scale = 0.0;  // Σ|c̃·x^a·y^b·z^c| (up to rounding), for the coefficients' error
+        double sum = 0.0, scale = 0.0;
         for (const Group& g : groups_) {
-            Ball in_z{0.0, 0.0};
-            double scale_in_z = 0.0;
+            double in_z = 0.0, scale_in_z = 0.0;
             for (std::size_t i = g.begin; i < g.end; ++i) {
-                const Ball term = times({coefficients_[i], 0.0}, zs[z_exponents_[i]]);
-                add_to(in_z, term);
-                scale_in_z += std::abs(term.v) + term.r;
+                in_z += coefficients_[i] * zs[z_exponents_[i]];
+                scale_in_z += std::abs(coefficients_[i]) * azs[z_exponents_[i]];
             }
-            const Ball xy = times(xs[g.ex], ys[g.ey]);
-            add_to(sum, times(xy, in_z));
-            scale += (std::abs(xy.v) + xy.r) * scale_in_z;
+            sum += xs[g.ex] * ys[g.ey] * in_z;
+            scale += axs[g.ex] * ays[g.ey] * scale_in_z;
         }
         const double n = double_double_depth_;
+        const double gamma = n * 0x1.0p-53 / (1.0 - n * 0x1.0p-53);
+        const double bound_of_scale = scale * (1.0 + 4.0 * (n + degree_) * 0x1.0p-53);
         ValueEnclosure result;
-        result.value = sum.v;
-        result.radius = sum.r * (1.0 + 2.0 * n * 0x1.0p-53 / (1.0 - n * 0x1.0p-53)) +
-                        coefficient_error_ * scale * 1.01 + (n + 8.0) * 0x1.0p-1060;
-        if (!std::isfinite(sum.v) || !std::isfinite(result.radius)) {
+        result.value = sum;
+        result.radius =
+            (gamma + coefficient_error_) * bound_of_scale * 1.001 + (n + 8.0) * 0x1.0p-1060;
+        if (!std::isfinite(sum) || !std::isfinite(result.radius)) {
             result.radius = INFINITY;
         }
         return result;
