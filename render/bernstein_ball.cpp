@@ -111,56 +111,79 @@ void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& 
     split_at(whole, 0.5, left, right);
 }
 
+namespace {
+
+// A coefficient and its radius, which de Casteljau's scheme combines with the same weights: one
+// SSE2 operation does both (GCC's vector extension, also understood by Clang).
+using ValueRadius = double __attribute__((vector_size(16)));
+
+// The largest |b_i|: every entry of de Casteljau's triangle is a convex combination of the b_i
+// (up to the roundings of the weights), so its rounding is bounded by γ·(this), which spares
+// the scheme a third triangle of magnitudes.
+double largest_magnitude(const BernsteinBall& g) {
+    double largest = 0.0;
+    for (int i = 0; i <= g.degree; ++i) {
+        largest = std::max(largest, std::abs(g.b[i]));
+    }
+    return largest;
+}
+
+}  // namespace
+
 void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right) {
     const int n = whole.degree;
-    left.degree = right.degree = n;
     if (n < 0) {
+        left.degree = right.degree = n;
         return;
     }
     const bool half = tau == 0.5;
     const double keep = 1.0 - tau;
     // The triangle of de Casteljau row by row: the left piece takes each row's first entry,
-    // the right piece each row's last (in reverse order). Magnitudes follow the values so that
-    // the rounding of every entry can be bounded by γ·(the same scheme on |b|).
-    std::array<double, kMaxDegree + 1> v, m, r, left_m, right_m;
+    // the right piece each row's last (in reverse order).
+    // Everything is read from `whole` before anything is written: the outputs may alias it.
+    std::array<ValueRadius, kMaxDegree + 1> p;
+    double largest = 0.0;
     for (int i = 0; i <= n; ++i) {
-        v[i] = whole.b[i];
-        m[i] = std::abs(whole.b[i]);
-        r[i] = whole.r[i];
+        p[i] = ValueRadius{whole.b[i], whole.r[i]};
+        largest = std::max(largest, std::abs(whole.b[i]));
     }
-    left.b[0] = v[0];
-    left.r[0] = r[0];
-    left_m[0] = m[0];
-    right.b[n] = v[n];
-    right.r[n] = r[n];
-    right_m[n] = m[n];
-    for (int level = 1; level <= n; ++level) {
-        for (int i = 0; i <= n - level; ++i) {
-            if (half) {
-                v[i] = 0.5 * (v[i] + v[i + 1]);
-                m[i] = 0.5 * (m[i] + m[i + 1]);
-                r[i] = 0.5 * (r[i] + r[i + 1]);
-            } else {
-                v[i] = keep * v[i] + tau * v[i + 1];
-                m[i] = keep * m[i] + tau * m[i + 1];
-                r[i] = keep * r[i] + tau * r[i + 1];
+    left.b[0] = p[0][0];
+    left.r[0] = p[0][1];
+    right.b[n] = p[n][0];
+    right.r[n] = p[n][1];
+    if (half) {
+        for (int level = 1; level <= n; ++level) {
+            for (int i = 0; i <= n - level; ++i) {
+                p[i] = 0.5 * (p[i] + p[i + 1]);
             }
+            left.b[level] = p[0][0];
+            left.r[level] = p[0][1];
+            right.b[n - level] = p[n - level][0];
+            right.r[n - level] = p[n - level][1];
         }
-        left.b[level] = v[0];
-        left.r[level] = r[0];
-        left_m[level] = m[0];
-        right.b[n - level] = v[n - level];
-        right.r[n - level] = r[n - level];
-        right_m[n - level] = m[n - level];
+    } else {
+        const ValueRadius weight_keep = {keep, keep}, weight_tau = {tau, tau};
+        for (int level = 1; level <= n; ++level) {
+            for (int i = 0; i <= n - level; ++i) {
+                p[i] = weight_keep * p[i] + weight_tau * p[i + 1];
+            }
+            left.b[level] = p[0][0];
+            left.r[level] = p[0][1];
+            right.b[n - level] = p[n - level][0];
+            right.r[n - level] = p[n - level][1];
+        }
     }
     // Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is
-    // exact) and three otherwise (the weight 1 − τ, the products, the sum); the magnitudes and
-    // radii, all positive, are rounded as often.
+    // exact) and three otherwise (the weight 1 − τ, the products, the sum), each at most u
+    // times an entry no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are
+    // rounded as often.
     const double rounding = gamma(half ? n + 1 : 3 * n + 3);
     const double widen = 1.0 + 2.0 * rounding;
+    const double value_error = rounding * largest * widen;
+    left.degree = right.degree = n;
     for (int i = 0; i <= n; ++i) {
-        left.r[i] = (left.r[i] + rounding * left_m[i]) * widen + kUnderflow;
-        right.r[i] = (right.r[i] + rounding * right_m[i]) * widen + kUnderflow;
+        left.r[i] = (left.r[i] + value_error) * widen + kUnderflow;
+        right.r[i] = (right.r[i] + value_error) * widen + kUnderflow;
     }
 }
 
@@ -171,58 +194,78 @@ BallValue evaluate(const BernsteinBall& g, double sigma) {
         return out;
     }
     const double keep = 1.0 - sigma;
-    std::array<double, kMaxDegree + 1> v, m, r;
+    std::array<ValueRadius, kMaxDegree + 1> p;
     for (int i = 0; i <= n; ++i) {
-        v[i] = g.b[i];
-        m[i] = std::abs(g.b[i]);
-        r[i] = g.r[i];
+        p[i] = ValueRadius{g.b[i], g.r[i]};
     }
+    const ValueRadius weight_keep = {keep, keep}, weight_sigma = {sigma, sigma};
     for (int level = 1; level <= n; ++level) {
         for (int i = 0; i <= n - level; ++i) {
-            v[i] = keep * v[i] + sigma * v[i + 1];
-            m[i] = keep * m[i] + sigma * m[i + 1];
-            r[i] = keep * r[i] + sigma * r[i + 1];
+            p[i] = weight_keep * p[i] + weight_sigma * p[i + 1];
         }
     }
     const double rounding = gamma(3 * n + 3);
-    out.value = v[0];
-    out.radius = (r[0] + rounding * m[0]) * (1.0 + 2.0 * rounding) + kUnderflow;
+    const double widen = 1.0 + 2.0 * rounding;
+    out.value = p[0][0];
+    out.radius = (p[0][1] + rounding * largest_magnitude(g) * widen) * widen + kUnderflow;
     if (!std::isfinite(out.value) || !std::isfinite(out.radius)) {
         out.radius = INFINITY;
     }
     return out;
 }
 
-ValueSlope estimate(const BernsteinBall& g, double sigma) {
-    const int n = g.degree;
-    ValueSlope out;
+MidpointPolynomial::MidpointPolynomial(const BernsteinBall& g) : degree_(g.degree) {
+    const int n = degree_;
     if (n <= 0) {
-        out.value = n == 0 ? g.b[0] : 0.0;
-        return out;
+        value_[0] = n == 0 ? g.b[0] : 0.0;
+        return;
     }
     const auto& c = binomials().c;
+    for (int i = 0; i <= n; ++i) {
+        value_[i] = g.b[i] * c[n][i];
+    }
+    for (int i = 0; i < n; ++i) {
+        slope_[i] = (g.b[i + 1] - g.b[i]) * c[n - 1][i];
+    }
+}
+
+ValueSlope MidpointPolynomial::at(double sigma) const {
+    const int n = degree_;
+    ValueSlope out;
+    if (n <= 0) {
+        out.value = value_[0];
+        return out;
+    }
     // Σ b_i C(n, i) σ^i (1 − σ)^(n − i) by Horner in q = σ/(1 − σ) (or its reciprocal past the
     // middle, so that q ≤ 1), and the derivative n·Σ (b_{i+1} − b_i) C(n − 1, i) σ^i (1 − σ)^…
     // the same way.
     const bool low = sigma <= 0.5;
     const double q = low ? sigma / (1.0 - sigma) : (1.0 - sigma) / sigma;
     const double base = low ? 1.0 - sigma : sigma;
-    double value = 0.0, slope = 0.0;
-    for (int step = 0; step <= n; ++step) {
-        const int i = low ? n - step : step;
-        value = value * q + g.b[i] * c[n][i];
+    double value = 0.0, slope = 0.0, power = 1.0;  // power: base^(n − 1)
+    if (low) {
+        value = value_[n];
+        for (int i = n - 1; i >= 0; --i) {
+            value = value * q + value_[i];
+            slope = slope * q + slope_[i];
+            power *= base;
+        }
+    } else {
+        value = value_[0];
+        for (int i = 1; i <= n; ++i) {
+            value = value * q + value_[i];
+            slope = slope * q + slope_[i - 1];
+            power *= base;
+        }
     }
-    for (int step = 0; step < n; ++step) {
-        const int i = low ? n - 1 - step : step;
-        slope = slope * q + (g.b[i + 1] - g.b[i]) * c[n - 1][i];
-    }
-    double power = 1.0;  // base^(n − 1)
-    for (int k = 1; k < n; ++k) {
-        power *= base;
-    }
+    power /= base;
     out.value = value * power * base;
     out.slope = n * slope * power;
     return out;
+}
+
+ValueSlope estimate(const BernsteinBall& g, double sigma) {
+    return MidpointPolynomial(g).at(sigma);
 }
 
 }  // namespace locus::render

@@ -38,9 +38,11 @@ struct BernsteinBall {
 BernsteinBall to_bernstein(const RestrictionBall& g);
 
 // De Casteljau at σ = 1/2: the halves [0, 1/2] and [1/2, 1], each mapped to [0, 1].
+// `left` or `right` may be `whole` itself (it is read before either is written).
 void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right);
 
 // De Casteljau at the double τ ∈ (0, 1): the pieces [0, τ] and [τ, 1], each mapped to [0, 1].
+// `left` or `right` may be `whole` itself.
 void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right);
 
 // The value at the double σ ∈ [0, 1] (de Casteljau, O(n²)) with a rigorous radius.
@@ -58,5 +60,17 @@ struct ValueSlope {
     double slope = 0.0;
 };
 ValueSlope estimate(const BernsteinBall& g, double sigma);
+
+// The same for many σ on one ball: the binomial weights are applied once.
+class MidpointPolynomial {
+  public:
+    explicit MidpointPolynomial(const BernsteinBall& g);
+    ValueSlope at(double sigma) const;
+
+  private:
+    int degree_;
+    std::array<double, kMaxDegree + 1> value_;  // b_i·C(n, i)
+    std::array<double, kMaxDegree + 1> slope_;  // (b_{i+1} − b_i)·C(n − 1, i)
+};
 
 }  // namespace locus::render

@@ -6,6 +6,17 @@
 namespace locus::render {
 
 int most_sign_changes(const BernsteinBall& g) {
+    // Most pieces are certainly of one sign throughout.
+    const int first = g.sign(0);
+    if (first != 0) {
+        int i = 1;
+        while (i <= g.degree && g.sign(i) == first) {
+            ++i;
+        }
+        if (i > g.degree) {
+            return 0;
+        }
+    }
     // The most changes of a choice of signs for coefficients 0..i that ends negative (or
     // positive); −1 when coefficient i cannot have that sign.
     int negative = -1, positive = -1;
@@ -33,30 +44,32 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
         out.piece = g;
         return out;
     }
-    // Pending right halves, innermost last; the piece being examined is [a, a + 2^-depth].
+    // Pending right halves, innermost last; the piece being examined is [a, a + 2^-depth], in
+    // `g`, `left` or the stack (no copies: a split may write over the piece it splits).
     std::array<BernsteinBall, 53> stack;
     std::array<double, 53> stack_a;
     std::array<int, 53> stack_depth;
     int top = 0;
-    BernsteinBall piece = g;
+    BernsteinBall left;
+    const BernsteinBall* piece = &g;
     double a = 0.0;
     int depth = 0;
     for (;;) {
         ++out.work;
         // A piece past the end of the search, and every piece after it, is not looked at.
-        const int changes = a > end ? 0 : most_sign_changes(piece);
+        const int changes = a > end ? 0 : most_sign_changes(*piece);
         if (a > end) {
             top = 0;
         }
         const double width = std::ldexp(1.0, -depth);
-        const int first = piece.sign(0);
-        const int last = piece.sign(piece.degree);
+        const int first = piece->sign(0);
+        const int last = piece->sign(piece->degree);
         if (changes == 1 && first != 0 && last != 0 && first != last) {
             out.kind = Isolation::Kind::one_root;
             out.lo = a;
             out.hi = a + width;
             out.sign_at_lo = first;
-            out.piece = piece;
+            out.piece = *piece;
             return out;
         }
         if (changes != 0) {
@@ -64,15 +77,14 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
                 out.kind = Isolation::Kind::undecided;
                 out.lo = a;
                 out.hi = a + width;
-                out.piece = piece;
+                out.piece = *piece;
                 return out;
             }
             ++depth;
             stack_a[top] = a + std::ldexp(1.0, -depth);
             stack_depth[top] = depth;
-            BernsteinBall left;
-            split_half(piece, left, stack[top]);
-            piece = left;
+            split_half(*piece, left, stack[top]);
+            piece = &left;
             ++top;
             continue;
         }
@@ -81,10 +93,59 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
             return out;
         }
         --top;
-        piece = stack[top];
+        piece = &stack[top];
         a = stack_a[top];
         depth = stack_depth[top];
     }
+}
+
+Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double end, double guess,
+                                  double reach) {
+    const double a = guess - reach, b = guess + reach;
+    if (g.degree < 1 || !(a > 0.0) || !(b < std::min(end, 1.0)) || !(b > a)) {
+        return isolate_first_root(g, max_depth, end);
+    }
+    max_depth = std::clamp(max_depth, 0, 52);
+    // A piece [base, base + scale] of g searched alone: pieces narrower than 2^-max_depth of g
+    // are still not split (ilogb(scale) ≤ log2(scale)), and its ends map back to g's σ.
+    const auto depth_within = [&](double scale) {
+        return std::max(0, max_depth + std::ilogb(scale));
+    };
+    int work = 0;
+    const auto mapped = [&](Isolation& sub, double base, double scale) -> Isolation& {
+        sub.lo = base + sub.lo * scale;
+        sub.hi = sub.hi == 1.0 ? base + scale : base + sub.hi * scale;
+        sub.work += work;
+        return sub;
+    };
+    // [0, a], whole first: most often certainly of one sign.
+    BernsteinBall before, after;
+    split_at(g, a, before, after);
+    ++work;
+    if (most_sign_changes(before) != 0) {
+        Isolation first = isolate_first_root(before, depth_within(a), 1.0);
+        if (first.kind != Isolation::Kind::no_root) {
+            return mapped(first, 0.0, a);
+        }
+        work += first.work;
+    }
+    // The window [a, h], h = a + τ·(1 − a) ≈ b, then [h, 1].
+    const double rest = 1.0 - a;
+    const double tau = (b - a) / rest;
+    BernsteinBall window, beyond;
+    split_at(after, tau, window, beyond);
+    ++work;
+    const double window_width = tau * rest;
+    Isolation near = isolate_first_root(window, depth_within(window_width), 1.0);
+    if (near.kind != Isolation::Kind::no_root) {
+        return mapped(near, a, window_width);
+    }
+    work += near.work;
+    const double h = a + window_width;
+    const double beyond_width = 1.0 - h;
+    Isolation last =
+        isolate_first_root(beyond, depth_within(beyond_width), (end - h) / beyond_width);
+    return mapped(last, h, beyond_width);
 }
 
 Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) {
@@ -97,17 +158,28 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
     // The root of the midpoint polynomial by safeguarded Newton (a Newton step that leaves the
     // bracket of the midpoint polynomial's own signs, or does not halve it, is replaced by
     // bisection): the estimate, and whether the radii leave any hope of placing the root to
-    // `width`.
+    // `width`. Past the radii's own blur (noise over slope) more steps only polish a guess the
+    // radii cannot confirm; a caller that must place the root better takes it from there.
+    double noise = 0.0;
+    for (int i = 0; i <= piece.degree; ++i) {
+        noise = std::max(noise, piece.r[i]);
+    }
+    const MidpointPolynomial midpoint(piece);
+    double slope = 0.0;
     {
         double lo = 0.0, hi = 1.0, x = 0.5;
-        const ValueSlope at_lo = estimate(piece, 0.0), at_hi = estimate(piece, 1.0);
-        if (at_lo.value != at_hi.value && std::isfinite(at_lo.value - at_hi.value)) {
-            x = std::clamp(-at_lo.value / (at_hi.value - at_lo.value), 0.0, 1.0);
+        // The end values are the end coefficients.
+        const double at_lo = piece.b[0], at_hi = piece.b[std::max(0, piece.degree)];
+        if (at_lo != at_hi && std::isfinite(at_lo - at_hi)) {
+            x = std::clamp(-at_lo / (at_hi - at_lo), 0.0, 1.0);
+            slope = at_hi - at_lo;  // the secant's, until Newton has its own
         }
-        double slope = 0.0, previous_step = 1.0;
-        for (int step = 0; step < 100 && hi - lo > 1e-3 * width && previous_step > 1e-3 * width;
-             ++step) {
-            const ValueSlope e = estimate(piece, x);
+        double previous_step = 1.0;
+        const auto resolved = [&](double step) {
+            return step <= 1e-3 * width || step * std::abs(slope) <= noise;
+        };
+        for (int step = 0; step < 100 && !resolved(hi - lo) && !resolved(previous_step); ++step) {
+            const ValueSlope e = midpoint.at(x);
             slope = e.slope;
             if (e.value == 0.0) {
                 break;
@@ -125,21 +197,24 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
             x = next;
         }
         out.estimate = x;
-        double noise = 0.0;
-        for (int i = 0; i <= piece.degree; ++i) {
-            noise = std::max(noise, piece.r[i]);
-        }
         if (!(noise < 0.25 * width * std::abs(slope))) {
             return out;
         }
     }
+    // The last Newton step was then below 1e-3·width or below noise/|slope| < 0.25·width, and
+    // the estimate's error far below the step (Newton converges quadratically): the estimate is
+    // the first proposal, without recomputing it.
+    bool proposed = true;
     bool bisect = false;
     for (int iteration = 0; iteration < 200 && b - a > width; ++iteration) {
         // A proposal from the midpoint polynomial: regula falsi between a and b, then Newton;
         // the midpoint of [a, b] after a proposal that did not halve the bracket.
         double x = 0.5 * (a + b);
-        if (!bisect) {
-            const ValueSlope at_a = estimate(piece, a), at_b = estimate(piece, b);
+        if (proposed) {
+            x = out.estimate;
+            proposed = false;
+        } else if (!bisect) {
+            const ValueSlope at_a = midpoint.at(a), at_b = midpoint.at(b);
             if (at_a.value != at_b.value && std::isfinite(at_a.value) &&
                 std::isfinite(at_b.value)) {
                 const double secant = a - at_a.value * (b - a) / (at_b.value - at_a.value);
@@ -148,7 +223,7 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
                 }
             }
             for (int step = 0; step < 8; ++step) {
-                const ValueSlope e = estimate(piece, x);
+                const ValueSlope e = midpoint.at(x);
                 const double next = x - e.value / e.slope;
                 if (!(next > a && next < b)) {
                     break;

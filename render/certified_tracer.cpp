@@ -52,7 +52,7 @@ double tolerance_scale(double lo, double hi) {
 // t_hi (each within `margin` of exact), none before it in the interval searched, and F(t_lo) of
 // sign `sign_at_lo`. `ball` is the restriction on that range, mapped to [0, 1].
 struct CertifiedTracer::Piece {
-    BernsteinBall ball;
+    const BernsteinBall& ball;
     int sign_at_lo = 0;
     double t_lo = 0.0, t_hi = 0.0;
     double margin = 0.0;
@@ -154,7 +154,9 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
                 break;
             }
         }
-        for (int side : {-1, 1}) {
+        // The farther end first: after a Newton probe the nearer end is often close enough.
+        const int farther = x - left <= right - x ? 1 : -1;
+        for (int side : {farther, -farther}) {
             for (double step = h; !done(); step *= 8.0) {
                 const double p = x + side * step;
                 if (!(p > probe_lo && p < probe_hi)) {
@@ -271,8 +273,12 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
 }
 
 RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0, double width,
-                                           const Ray& ray, Interval interval,
-                                           double tolerance) const {
+                                           const Ray& ray, Interval interval, double tolerance,
+                                           NeighbourHint* hint) const {
+    NeighbourHint unused;
+    NeighbourHint& next = hint != nullptr ? *hint : unused;
+    const NeighbourHint guess = next;
+    next = NeighbourHint{};
     if (!(interval.hi > interval.lo)) {
         return miss(0);
     }
@@ -285,13 +291,17 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     if (!(s_hi > s0) || interval.lo < t0 || interval.hi > t0 + width) {
         return first_hit(ray, interval, tolerance);
     }
-    BernsteinBall piece = ball;
+    const BernsteinBall* piece = &ball;
+    BernsteinBall left, right;
     if (s0 > 0.0) {
-        BernsteinBall left, right;
         split_at(ball, s0, left, right);
-        piece = right;
+        piece = &right;
     }
-    const Isolation isolation = isolate_first_root(piece, kFamilyDepth, (s_hi - s0) / (1.0 - s0));
+    // The neighbour's root and reach in σ' (NaN when it had none: no guess).
+    const double piece_width = (1.0 - s0) * width;
+    const Isolation isolation = isolate_first_root_near(
+        *piece, kFamilyDepth, (s_hi - s0) / (1.0 - s0), (guess.t - t0 - s0 * width) / piece_width,
+        guess.reach / piece_width);
     if (isolation.kind == Isolation::Kind::no_root) {
         return miss(isolation.work);
     }
@@ -300,8 +310,9 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
         alone.work += isolation.work;
         return alone;
     }
-    // t = t0 + (s0 + σ'·(1 − s0))·width, exact up to the rounding of the map.
-    const double margin = 8.0 * kUnit * (std::abs(t0) + std::abs(width)) + kTiny;
+    // t = t0 + (s0 + σ'·(1 − s0))·width, exact up to the rounding of the map and of the
+    // piece's ends (within 6u of exact when the search was guided).
+    const double margin = 16.0 * kUnit * (std::abs(t0) + std::abs(width)) + kTiny;
     const auto t_at = [&](double sigma) { return t0 + (s0 + sigma * (1.0 - s0)) * width; };
     const Piece found{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo), t_at(isolation.hi),
                       margin};
@@ -312,6 +323,10 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
         RootResult none = miss(result.work);
         none.decided_by = result.decided_by;
         return none;
+    }
+    if (result.status == RootStatus::hit) {
+        next.t = result.t;
+        next.reach = 0.5 * (found.t_hi - found.t_lo);
     }
     return result;
 }

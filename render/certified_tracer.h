@@ -20,6 +20,8 @@
 //     rays, double roots, a root at the interval's start, rays lying in the surface.
 #pragma once
 
+#include <limits>
+
 #include "algebra/compiled.h"
 #include "render/bernstein_ball.h"
 #include "render/ray_restriction.h"
@@ -35,6 +37,14 @@ inline constexpr double kTraceTolerance = 1e-12;
 // 1e-12 cost double-double evaluations for a third of the degree-12 surface's rays.
 inline constexpr double kRenderTolerance = 1e-9;
 
+// What one primary ray's answer tells the next ray of its row: where its root was (NaN: no root)
+// and the half-width of the piece that isolated it. A guess only (isolate_first_root_near):
+// the next answer is certified all the same.
+struct NeighbourHint {
+    double t = std::numeric_limits<double>::quiet_NaN();
+    double reach = 0.0;
+};
+
 class CertifiedTracer {
   public:
     // The polynomial must outlive the tracer.
@@ -46,9 +56,11 @@ class CertifiedTracer {
     // The same, starting from a ball that a ray family computed for this ray: `ball` is the
     // restriction G(σ) = F(t0 + σ·width), σ ∈ [0, 1], of the exact ray with rigorous radii,
     // and [t0, t0 + width] ⊇ the interval to search. The ball's decision is used where it is
-    // certain; the ray is traced alone (first_hit) where it is not.
+    // certain; the ray is traced alone (first_hit) where it is not. `hint`, when given, guides
+    // the search and is updated for the next ray.
     RootResult first_hit_from(const BernsteinBall& ball, double t0, double width, const Ray& ray,
-                              Interval interval, double tolerance) const;
+                              Interval interval, double tolerance,
+                              NeighbourHint* hint = nullptr) const;
 
     // Statistics of the tiers (for tests and benchmarks) are in RootResult::decided_by.
 

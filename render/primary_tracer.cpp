@@ -84,6 +84,7 @@ PrimaryTracer::PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera&
 
 void PrimaryTracer::begin_row(double image_y, Row& row) const {
     row.previous_hit = NAN;
+    row.neighbour = NeighbourHint{};
     row.image_y = image_y;
     if (family_ == Family::floating) {
         floating_->expand_row(image_y, row.floating);
@@ -110,7 +111,7 @@ RootResult PrimaryTracer::first_hit(Row& row, double image_x, const Ray& ray,
         }
         certified_->ball_at(row.certified, image_x, row.ball);
         hit = tracer_->first_hit_from(row.ball, certified_->t_start(), certified_->t_width(), ray,
-                                      interval);
+                                      interval, &row.neighbour);
         break;
     case Family::none:
         hit = tracer_->first_hit(ray, interval);

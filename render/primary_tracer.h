@@ -29,6 +29,7 @@ class PrimaryTracer {
         RayRestriction restriction;
         BernsteinBall ball;
         double previous_hit = 0.0;
+        NeighbourHint neighbour;  // for the certified family's search
         double image_y = 0.0;
     };
     void begin_row(double image_y, Row& row) const;

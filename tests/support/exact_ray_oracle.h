@@ -227,27 +227,32 @@ class ExactRayOracle {
     // F has no root in (0, t_max]; a hit t when F has no root in (0, t − ε] and one in
     // (0, t + ε], ε = tolerance·max(1, |t|); any hit when F ≡ 0.
     static bool is_right(const Restriction& r, double t_max, bool hit, double t, double tolerance) {
+        return is_right(r, 0.0, t_max, hit, t, tolerance);
+    }
+    // The same for the interval (t_min, t_max].
+    static bool is_right(const Restriction& r, double t_min, double t_max, bool hit, double t,
+                         double tolerance) {
         if (r.zero) {
             return hit;
         }
-        Q zero, end, before, after;
-        fmpq_zero(zero.q);
-        const int v_zero = r.variations(zero.q);
+        Q start, end, before, after;
+        exact(start.q, t_min);
+        const int v_start = r.variations(start.q);
         if (!hit) {
             exact(end.q, t_max);
-            return r.variations(end.q) == v_zero;
+            return r.variations(end.q) == v_start;
         }
         const double slack = tolerance * std::max(1.0, std::abs(t));
-        if (!(t + slack > 0.0) || t - slack > t_max) {
+        if (!(t + slack > t_min) || t - slack > t_max) {
             return false;
         }
         exact(after.q, std::min(t + slack, t_max));
         bool none_before = true;
-        if (t - slack > 0.0) {
+        if (t - slack > t_min) {
             exact(before.q, t - slack);
-            none_before = r.variations(before.q) == v_zero;
+            none_before = r.variations(before.q) == v_start;
         }
-        return none_before && r.variations(after.q) < v_zero;
+        return none_before && r.variations(after.q) < v_start;
     }
 
     // "2.5e-3" style decimals become "(25/10000)"; everything else is left to FLINT's parser.

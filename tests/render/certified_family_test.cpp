@@ -1,0 +1,196 @@
+// The certified method on primary rays, as the renderer runs it: each pixel's ball from the
+// frame's CertifiedRayFamily, searched with and without a neighbour's hint
+// (CertifiedTracer::first_hit_from, isolate_first_root_near). The hint only steers the search,
+// so every answer — whatever the hint: the true root, a later root, a random point, a window far
+// too narrow or too wide — must keep the contract, checked against the exact oracle
+// (tests/support/exact_ray_oracle.h), which shares no code with the tracer. Surfaces and
+// cameras nobody tuned the search for: thin walls (Chmutov's octic), nodes, double surfaces,
+// random eyes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "algebra/compiled.h"
+#include "bench/surface_suite.h"
+#include "render/bernstein_ball.h"
+#include "render/certified_isolation.h"
+#include "render/certified_ray_family.h"
+#include "render/certified_tracer.h"
+#include "tests/support/exact_ray_oracle.h"
+#include "tests/support/test_data.h"
+
+namespace locus::render {
+namespace {
+
+bench::SuiteSurface suite_surface(const std::string& name) {
+    const std::string text = test::read_text(test::source_dir() + "/bench/data/surfaces/SUITE.txt");
+    for (const bench::SuiteSurface& s : bench::parse_surface_suite(text)) {
+        if (s.name == name) {
+            return s;
+        }
+    }
+    throw std::runtime_error("no suite surface " + name);
+}
+
+class GuidedSearch : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
+    const bench::SuiteSurface surface = suite_surface(GetParam());
+    const algebra::CompiledPolynomial f = algebra::compile_surface(surface.equation);
+    const test::ExactRayOracle oracle(surface.equation);
+    const CertifiedTracer tracer(f);
+    const double radius = surface.clip_radius;
+    std::mt19937_64 random(std::hash<std::string>{}(surface.name));
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    constexpr int kSize = 24;
+    int checked = 0, hits = 0, guided_hits = 0;
+    for (int view = 0; view < 2; ++view) {
+        // An eye at 2.5–4 clip radii in a random direction.
+        Vec3 eye{unit(random), unit(random), unit(random)};
+        eye *= (2.5 + 1.5 * fraction(random)) * radius / glm::length(eye);
+        const Camera camera({eye, {0.0, 0.0, 0.0}, {0.3, 1.0, 0.1}, 35.0}, kSize, kSize);
+        const CertifiedRayFamily family(f, camera, {0.0, 0.0, 0.0}, radius,
+                                        {0.0, 0.0, kSize, kSize});
+        ASSERT_TRUE(family.certified());
+        const double t0 = family.t_start(), width = family.t_width();
+        auto row = std::make_unique<CertifiedRayFamily::Row>();
+        for (int j = 0; j < kSize; ++j) {
+            const double y = j + 0.5;
+            family.expand_row(y, *row);
+            NeighbourHint neighbour;  // carried along the row, as the renderer does
+            for (int i = 0; i < kSize; ++i) {
+                const double x = i + 0.5;
+                const Ray ray = camera.ray(x, y);
+                // The ray's chord of the clip sphere, inside the family's range.
+                const double a = glm::dot(ray.direction, ray.direction);
+                const double b = glm::dot(ray.origin, ray.direction);
+                const double c = glm::dot(ray.origin, ray.origin) - radius * radius;
+                const double discriminant = b * b - a * c;
+                if (!(discriminant > 0.0)) {
+                    neighbour = NeighbourHint{};
+                    continue;
+                }
+                const double root = std::sqrt(discriminant);
+                Interval interval{std::max(t0, (-b - root) / a),
+                                  std::min(t0 + width, (-b + root) / a)};
+                if (!(interval.hi > interval.lo)) {
+                    continue;
+                }
+                BernsteinBall ball;
+                family.ball_at(*row, x, ball);
+                const test::ExactRayOracle::Restriction exact =
+                    oracle.restrict(to_point(ray.origin), to_point(ray.direction));
+                const auto check = [&](const RootResult& r, const char* how) {
+                    ++checked;
+                    ASSERT_NE(r.status, RootStatus::unknown) << how;
+                    EXPECT_TRUE(test::ExactRayOracle::is_right(exact, interval.lo, interval.hi,
+                                                               r.status == RootStatus::hit, r.t,
+                                                               kRenderTolerance))
+                        << surface.name << ", pixel " << i << ' ' << j << " of view " << view
+                        << ", " << how << ": answered "
+                        << (r.status == RootStatus::hit ? std::to_string(r.t) : "miss");
+                };
+                const RootResult plain =
+                    tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance);
+                check(plain, "no hint");
+                hits += plain.status == RootStatus::hit ? 1 : 0;
+                // The row's own hint, as in a frame.
+                const bool had_hint = std::isfinite(neighbour.t);
+                const RootResult in_row = tracer.first_hit_from(ball, t0, width, ray, interval,
+                                                                kRenderTolerance, &neighbour);
+                check(in_row, "the neighbour's hint");
+                guided_hits += had_hint && in_row.status == RootStatus::hit ? 1 : 0;
+                // Hints that are wrong on purpose: a random point with a random reach, the root
+                // itself with a reach far too small, a point just past the root (so that the
+                // window holds a later root, or none).
+                const double span = interval.hi - interval.lo;
+                NeighbourHint random_hint{interval.lo + fraction(random) * span,
+                                          std::pow(10.0, -6.0 * fraction(random)) * span};
+                check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
+                                            &random_hint),
+                      "a random hint");
+                if (plain.status == RootStatus::hit) {
+                    NeighbourHint tight{plain.t, 1e-12 * span};
+                    check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
+                                                &tight),
+                          "the root with a tiny reach");
+                    NeighbourHint past{plain.t + 0.2 * (interval.hi - plain.t), 0.1 * span};
+                    check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
+                                                &past),
+                          "a point past the root");
+                }
+            }
+        }
+    }
+    // The frames are not empty, and the row's hint was used.
+    EXPECT_GT(hits, 50) << surface.name;
+    EXPECT_GT(guided_hits, 25) << surface.name;
+    EXPECT_GT(checked, 1000) << surface.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Suite, GuidedSearch,
+                         ::testing::Values("chmutov_octic", "endrass_octic", "torus",
+                                           "kummer_quartic", "squared_sphere", "steiner_roman"));
+
+// De Casteljau may write a piece over the ball it splits (the isolation's stack relies on it).
+TEST(BernsteinSplit, MayWriteOverItsInput) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        BernsteinBall whole;
+        whole.degree = 1 + trial % 12;
+        for (int i = 0; i <= whole.degree; ++i) {
+            whole.b[i] = unit(random) * std::pow(10.0, 3.0 * unit(random));
+            whole.r[i] = std::abs(whole.b[i]) * 1e-12 * (1.0 + unit(random));
+        }
+        const double tau = trial % 3 == 0 ? 0.5 : 0.5 + 0.49 * unit(random);
+        BernsteinBall left, right;
+        split_at(whole, tau, left, right);
+        BernsteinBall over_left = whole, over_right = whole;
+        BernsteinBall other_left, other_right;
+        split_at(over_left, tau, over_left, other_right);
+        split_at(over_right, tau, other_left, over_right);
+        for (int i = 0; i <= whole.degree; ++i) {
+            EXPECT_EQ(over_left.b[i], left.b[i]);
+            EXPECT_EQ(over_left.r[i], left.r[i]);
+            EXPECT_EQ(over_right.b[i], right.b[i]);
+            EXPECT_EQ(over_right.r[i], right.r[i]);
+        }
+    }
+}
+
+// The prepared midpoint polynomial (Horner on binomially weighted coefficients) against de
+// Casteljau's scheme, which shares nothing with it: the value, and the slope as a central
+// difference.
+TEST(MidpointPolynomial, AgreesWithDeCasteljau) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        BernsteinBall g;
+        g.degree = trial % 16;
+        double scale = 0.0;
+        for (int i = 0; i <= g.degree; ++i) {
+            g.b[i] = unit(random);
+            g.r[i] = 0.0;
+            scale += std::abs(g.b[i]);
+        }
+        const MidpointPolynomial midpoint(g);
+        const double sigma = fraction(random);
+        const ValueSlope prepared = midpoint.at(sigma);
+        const BallValue reference = evaluate(g, sigma);
+        EXPECT_NEAR(prepared.value, reference.value, 1e-13 * scale + reference.radius);
+        // The slope against a central difference of de Casteljau values.
+        if (g.degree > 0 && sigma > 1e-3 && sigma < 1.0 - 1e-3) {
+            const double h = 1e-6;
+            const double difference =
+                (evaluate(g, sigma + h).value - evaluate(g, sigma - h).value) / (2.0 * h);
+            EXPECT_NEAR(prepared.slope, difference, 1e-5 * (1.0 + std::abs(difference)) * scale);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace locus::render
