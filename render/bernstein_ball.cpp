@@ -130,19 +130,21 @@ double largest_magnitude(const BernsteinBall& g) {
 
 }  // namespace
 
-void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right) {
-    const int n = whole.degree;
-    if (n < 0) {
-        left.degree = right.degree = n;
-        return;
-    }
-    const bool half = tau == 0.5;
-    const double keep = 1.0 - tau;
-    // The triangle of de Casteljau row by row: the left piece takes each row's first entry,
-    // the right piece each row's last (in reverse order).
-    // Everything is read from `whole` before anything is written: the outputs may alias it.
-    std::array<ValueRadius, kMaxDegree + 1> p;
+namespace {
+
+// De Casteljau's triangle row by row: the left piece takes each row's first entry, the right
+// piece each row's last (in reverse order). For a degree known at compile time (`Fixed` ≥ 0)
+// the loops unroll and the row stays in registers — the subdivisions of the certified tracer
+// are most of a frame at degree ≤ 12; `Fixed` = −1 takes the degree from the ball.
+// Everything is read from `whole` before anything is written: the outputs may alias it.
+// Returns max|b_i|, for the rounding bound.
+template <int Fixed>
+double de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
+                    BernsteinBall& right) {
+    const int n = Fixed >= 0 ? Fixed : whole.degree;
+    std::array<ValueRadius, (Fixed >= 0 ? Fixed : kMaxDegree) + 1> p;
     double largest = 0.0;
+#pragma GCC unroll 16
     for (int i = 0; i <= n; ++i) {
         p[i] = ValueRadius{whole.b[i], whole.r[i]};
         largest = std::max(largest, std::abs(whole.b[i]));
@@ -151,33 +153,78 @@ void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, Berns
     left.r[0] = p[0][1];
     right.b[n] = p[n][0];
     right.r[n] = p[n][1];
-    if (half) {
-        for (int level = 1; level <= n; ++level) {
-            for (int i = 0; i <= n - level; ++i) {
-                p[i] = 0.5 * (p[i] + p[i + 1]);
-            }
-            left.b[level] = p[0][0];
-            left.r[level] = p[0][1];
-            right.b[n - level] = p[n - level][0];
-            right.r[n - level] = p[n - level][1];
+    // At τ = 1/2 both weights are 1/2 and the products exact: one rounding per level.
+    const double keep = 1.0 - tau;
+    const ValueRadius weight_keep = {keep, keep}, weight_tau = {tau, tau};
+#pragma GCC unroll 16
+    for (int level = 1; level <= n; ++level) {
+#pragma GCC unroll 16
+        for (int i = 0; i <= n - level; ++i) {
+            p[i] = weight_keep * p[i] + weight_tau * p[i + 1];
         }
-    } else {
-        const ValueRadius weight_keep = {keep, keep}, weight_tau = {tau, tau};
-        for (int level = 1; level <= n; ++level) {
-            for (int i = 0; i <= n - level; ++i) {
-                p[i] = weight_keep * p[i] + weight_tau * p[i + 1];
-            }
-            left.b[level] = p[0][0];
-            left.r[level] = p[0][1];
-            right.b[n - level] = p[n - level][0];
-            right.r[n - level] = p[n - level][1];
-        }
+        left.b[level] = p[0][0];
+        left.r[level] = p[0][1];
+        right.b[n - level] = p[n - level][0];
+        right.r[n - level] = p[n - level][1];
+    }
+    return largest;
+}
+
+}  // namespace
+
+void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right) {
+    const int n = whole.degree;
+    if (n < 0) {
+        left.degree = right.degree = n;
+        return;
+    }
+    double largest = 0.0;
+    switch (n) {
+    case 1:
+        largest = de_casteljau<1>(whole, tau, left, right);
+        break;
+    case 2:
+        largest = de_casteljau<2>(whole, tau, left, right);
+        break;
+    case 3:
+        largest = de_casteljau<3>(whole, tau, left, right);
+        break;
+    case 4:
+        largest = de_casteljau<4>(whole, tau, left, right);
+        break;
+    case 5:
+        largest = de_casteljau<5>(whole, tau, left, right);
+        break;
+    case 6:
+        largest = de_casteljau<6>(whole, tau, left, right);
+        break;
+    case 7:
+        largest = de_casteljau<7>(whole, tau, left, right);
+        break;
+    case 8:
+        largest = de_casteljau<8>(whole, tau, left, right);
+        break;
+    case 9:
+        largest = de_casteljau<9>(whole, tau, left, right);
+        break;
+    case 10:
+        largest = de_casteljau<10>(whole, tau, left, right);
+        break;
+    case 11:
+        largest = de_casteljau<11>(whole, tau, left, right);
+        break;
+    case 12:
+        largest = de_casteljau<12>(whole, tau, left, right);
+        break;
+    default:
+        largest = de_casteljau<-1>(whole, tau, left, right);
+        break;
     }
     // Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is
     // exact) and three otherwise (the weight 1 − τ, the products, the sum), each at most u
     // times an entry no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are
     // rounded as often.
-    const double rounding = gamma(half ? n + 1 : 3 * n + 3);
+    const double rounding = gamma(tau == 0.5 ? n + 1 : 3 * n + 3);
     const double widen = 1.0 + 2.0 * rounding;
     const double value_error = rounding * largest * widen;
     left.degree = right.degree = n;

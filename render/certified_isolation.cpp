@@ -2,20 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace locus::render {
 
 int most_sign_changes(const BernsteinBall& g) {
-    // Most pieces are certainly of one sign throughout.
-    const int first = g.sign(0);
-    if (first != 0) {
-        int i = 1;
-        while (i <= g.degree && g.sign(i) == first) {
-            ++i;
+    // Most pieces have every sign certain: the changes are then counted as they are.
+    int changes = 0, previous = 0;
+    bool uncertain = false;
+    for (int i = 0; i <= g.degree; ++i) {
+        const int s = g.sign(i);
+        if (s == 0) {
+            uncertain = true;
+            break;
         }
-        if (i > g.degree) {
-            return 0;
-        }
+        changes += previous != 0 && s != previous ? 1 : 0;
+        previous = s;
+    }
+    if (!uncertain) {
+        return changes;
     }
     // The most changes of a choice of signs for coefficients 0..i that ends negative (or
     // positive); −1 when coefficient i cannot have that sign.
@@ -61,7 +66,7 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
         if (a > end) {
             top = 0;
         }
-        const double width = std::ldexp(1.0, -depth);
+        const double width = 1.0 / static_cast<double>(std::uint64_t{1} << depth);  // exact
         const int first = piece->sign(0);
         const int last = piece->sign(piece->degree);
         if (changes == 1 && first != 0 && last != 0 && first != last) {
@@ -81,7 +86,7 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
                 return out;
             }
             ++depth;
-            stack_a[top] = a + std::ldexp(1.0, -depth);
+            stack_a[top] = a + 0.5 * width;
             stack_depth[top] = depth;
             split_half(*piece, left, stack[top]);
             piece = &left;
@@ -99,12 +104,8 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
     }
 }
 
-Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double end, double guess,
-                                  double reach) {
-    const double a = guess - reach, b = guess + reach;
-    if (g.degree < 1 || !(a > 0.0) || !(b < std::min(end, 1.0)) || !(b > a)) {
-        return isolate_first_root(g, max_depth, end);
-    }
+Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double start, double end,
+                                  double guess, double reach) {
     max_depth = std::clamp(max_depth, 0, 52);
     // A piece [base, base + scale] of g searched alone: pieces narrower than 2^-max_depth of g
     // are still not split (ilogb(scale) ≤ log2(scale)), and its ends map back to g's σ.
@@ -118,14 +119,40 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
         sub.work += work;
         return sub;
     };
-    // [0, a], whole first: most often certainly of one sign.
+    // The search of [from, 1] up to `end` without a guess: cut at `from`, bisect the rest.
+    const auto search_from = [&](const BernsteinBall& piece, double from) -> Isolation {
+        if (!(from > 0.0)) {
+            Isolation whole = isolate_first_root(piece, max_depth, end);
+            return mapped(whole, 0.0, 1.0);
+        }
+        BernsteinBall skipped, rest;
+        split_at(piece, from, skipped, rest);
+        ++work;
+        const double scale = 1.0 - from;
+        Isolation sub = isolate_first_root(rest, depth_within(scale), (end - from) / scale);
+        return mapped(sub, from, scale);
+    };
+    const double a = guess - reach, b = guess + reach;
+    if (g.degree < 1 || !(a > start) || !(b < std::min(end, 1.0)) || !(b > a)) {
+        return search_from(g, start);
+    }
+    // [0, a] whole first — the stretch before `start` too: a piece certainly of one sign
+    // throughout (the common case) costs one cut; otherwise [start, a] is cut from it.
     BernsteinBall before, after;
     split_at(g, a, before, after);
     ++work;
     if (most_sign_changes(before) != 0) {
-        Isolation first = isolate_first_root(before, depth_within(a), 1.0);
+        double base = 0.0;
+        if (start > 0.0) {
+            BernsteinBall skipped;
+            split_at(before, start / a, skipped, before);
+            ++work;
+            base = start;  // within 2u of the cut's exact σ, a·(start/a)
+        }
+        const double scale = a - base;
+        Isolation first = isolate_first_root(before, depth_within(scale), 1.0);
         if (first.kind != Isolation::Kind::no_root) {
-            return mapped(first, 0.0, a);
+            return mapped(first, base, scale);
         }
         work += first.work;
     }
@@ -168,11 +195,16 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
     double slope = 0.0;
     {
         double lo = 0.0, hi = 1.0, x = 0.5;
-        // The end values are the end coefficients.
-        const double at_lo = piece.b[0], at_hi = piece.b[std::max(0, piece.degree)];
-        if (at_lo != at_hi && std::isfinite(at_lo - at_hi)) {
-            x = std::clamp(-at_lo / (at_hi - at_lo), 0.0, 1.0);
-            slope = at_hi - at_lo;  // the secant's, until Newton has its own
+        // The start: where the control polygon crosses zero (its vertices are (i/n, b_i)),
+        // nearer the root than the chord between the end values, and its slope there.
+        const int n = piece.degree;
+        for (int i = 0; i < n; ++i) {
+            const double here = piece.b[i], next = piece.b[i + 1];
+            if ((here > 0.0) != (next > 0.0) && here != next && std::isfinite(here - next)) {
+                x = std::clamp((i + here / (here - next)) / n, 0.0, 1.0);
+                slope = n * (next - here);  // until Newton has its own
+                break;
+            }
         }
         double previous_step = 1.0;
         const auto resolved = [&](double step) {

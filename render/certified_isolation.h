@@ -34,15 +34,16 @@ struct Isolation {
 // and a `one_root` piece may reach past `end`, with its root on either side.
 Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end = 1.0);
 
-// The same search, guided by a guess: the first root is expected in [guess − reach,
-// guess + reach] (the neighbouring pixel's root and the width that isolated it). The piece before
-// that window is cut off and tested whole, then the window, then the rest — two cuts where
-// bisection from [0, 1] takes a piece for every level down to the root. A wrong guess costs
-// those two cuts and the answer is the same. The ends of a `one_root` or `undecided` piece are
-// then not dyadic but computed, each within 6u of the exact end of its piece.
-// Without a usable window (not inside (0, min(end, 1)), or NaN) this is isolate_first_root.
-Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double end, double guess,
-                                  double reach);
+// The same search over [start, 1] only (up to `end`), guided by a guess: the first root is
+// expected in [guess − reach, guess + reach] (the neighbouring pixel's root and the width that
+// isolated it). The piece before that window is tested whole first (from 0: one cut when it is
+// certainly of one sign), then the window, then the rest — where bisection from `start` takes
+// a cut for every level down to the root. A wrong guess costs those cuts, never the answer.
+// Without a usable window (not inside (start, min(end, 1)), or NaN) the search is
+// isolate_first_root's on [start, 1]. The ends of a `one_root` or `undecided` piece are in g's
+// σ and not dyadic: each is within 6u of the exact end of its piece.
+Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double start, double end,
+                                  double guess, double reach);
 
 // The most sign changes of any choice of signs for the coefficients the ball leaves uncertain.
 int most_sign_changes(const BernsteinBall& g);

@@ -282,8 +282,7 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     if (!(interval.hi > interval.lo)) {
         return miss(0);
     }
-    // Cut the family's ball at the interval's start (σ = s0 of [t0, t0 + width]) and search
-    // the rest only up to its end: σ' ∈ [0, 1] is σ = s0 + σ'·(1 − s0).
+    // The interval is σ ∈ [s0, s_hi] of [t0, t0 + width].
     const double s0 = std::max(0.0, (interval.lo - t0) / width);
     const double s_hi = std::min(1.0, (interval.hi - t0) / width);
     // An interval reaching past the ball's range (by roundings of the range's ends) is traced
@@ -291,17 +290,9 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     if (!(s_hi > s0) || interval.lo < t0 || interval.hi > t0 + width) {
         return first_hit(ray, interval, tolerance);
     }
-    const BernsteinBall* piece = &ball;
-    BernsteinBall left, right;
-    if (s0 > 0.0) {
-        split_at(ball, s0, left, right);
-        piece = &right;
-    }
-    // The neighbour's root and reach in σ' (NaN when it had none: no guess).
-    const double piece_width = (1.0 - s0) * width;
+    // The neighbour's root and reach in σ (NaN when it had none: no guess).
     const Isolation isolation = isolate_first_root_near(
-        *piece, kFamilyDepth, (s_hi - s0) / (1.0 - s0), (guess.t - t0 - s0 * width) / piece_width,
-        guess.reach / piece_width);
+        ball, kFamilyDepth, s0, s_hi, (guess.t - t0) / width, guess.reach / width);
     if (isolation.kind == Isolation::Kind::no_root) {
         return miss(isolation.work);
     }
@@ -310,10 +301,10 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
         alone.work += isolation.work;
         return alone;
     }
-    // t = t0 + (s0 + σ'·(1 − s0))·width, exact up to the rounding of the map and of the
-    // piece's ends (within 6u of exact when the search was guided).
+    // t = t0 + σ·width, exact up to the rounding of the map and of the piece's ends (within 6u
+    // of exact).
     const double margin = 16.0 * kUnit * (std::abs(t0) + std::abs(width)) + kTiny;
-    const auto t_at = [&](double sigma) { return t0 + (s0 + sigma * (1.0 - s0)) * width; };
+    const auto t_at = [&](double sigma) { return t0 + sigma * width; };
     const Piece found{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo), t_at(isolation.hi),
                       margin};
     RootResult result = narrow(ray, found, tolerance, isolation.work);
