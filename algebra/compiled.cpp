@@ -101,6 +101,13 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
     // group and the sum of the groups.
     double_double_depth_ =
         2 * degree_ + 3 + static_cast<int>(longest_group) + static_cast<int>(groups_.size());
+    // enclose_on_line in doubles errs by at most (γ_N + ρ)·Σ|terms|·(1 + 4(N + degree)u) (see
+    // there), and underflow adds at most (N + 8)·2^-1060.
+    const double n = double_double_depth_;
+    const double gamma = n * 0x1.0p-53 / (1.0 - n * 0x1.0p-53);
+    double_error_per_scale_ =
+        (gamma + coefficient_error_) * (1.0 + 4.0 * (n + degree_) * 0x1.0p-53) * 1.001;
+    double_error_floor_ = (n + 8.0) * 0x1.0p-1060;
 }
 
 const std::string& CompiledPolynomial::equation() const {
@@ -197,7 +204,8 @@ ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const P
         // roundings — the point's, the powers', its products and the sums it enters — so the
         // value errs by at most γ_N·Σ|terms| (Higham, "Accuracy and Stability of Numerical
         // Algorithms", §3.1) and the coefficients' own rounding adds ρ·Σ|terms|. Σ|terms| is
-        // itself rounded N + degree times at most: (1 + 4(N + degree)u) covers it.
+        // itself rounded N + degree times at most: (1 + 4(N + degree)u) covers it. The factors
+        // are the constructor's.
         std::array<double, 3> point, magnitude;
         for (int axis = 0; axis < 3; ++axis) {
             point[axis] = std::fma(t, direction[axis], origin[axis]);
@@ -224,13 +232,9 @@ ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const P
             sum += xs[g.ex] * ys[g.ey] * in_z;
             scale += axs[g.ex] * ays[g.ey] * scale_in_z;
         }
-        const double n = double_double_depth_;
-        const double gamma = n * 0x1.0p-53 / (1.0 - n * 0x1.0p-53);
-        const double bound_of_scale = scale * (1.0 + 4.0 * (n + degree_) * 0x1.0p-53);
         ValueEnclosure result;
         result.value = sum;
-        result.radius =
-            (gamma + coefficient_error_) * bound_of_scale * 1.001 + (n + 8.0) * 0x1.0p-1060;
+        result.radius = double_error_per_scale_ * scale + double_error_floor_;
         if (!std::isfinite(sum) || !std::isfinite(result.radius)) {
             result.radius = INFINITY;
         }

@@ -120,6 +120,9 @@ class CompiledPolynomial {
     std::vector<double> low_words_;
     double double_double_coefficient_error_ = 0.0;
     int double_double_depth_ = 0;
+    // enclose_on_line's bound in doubles: radius = per_scale·Σ|terms| + floor.
+    double double_error_per_scale_ = 0.0;
+    double double_error_floor_ = 0.0;
     double coefficient_error_ = 0.0;
     int degree_ = 0;
     bool made_square_free_ = false;

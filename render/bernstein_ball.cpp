@@ -283,31 +283,24 @@ ValueSlope MidpointPolynomial::at(double sigma) const {
         out.value = value_[0];
         return out;
     }
-    // Σ b_i C(n, i) σ^i (1 − σ)^(n − i) by Horner in q = σ/(1 − σ) (or its reciprocal past the
-    // middle, so that q ≤ 1), and the derivative n·Σ (b_{i+1} − b_i) C(n − 1, i) σ^i (1 − σ)^…
+    // Σ w_i σ^i (1 − σ)^(n − i) by Horner in σ with the powers of 1 − σ formed on the way
+    // (((w_n σ + w_{n−1} s) σ + w_{n−2} s²) σ + …, s = 1 − σ): no division and no branch, and
+    // every weight positive. The derivative n·Σ (b_{i+1} − b_i) C(n − 1, i) σ^i s^(n − 1 − i)
     // the same way.
-    const bool low = sigma <= 0.5;
-    const double q = low ? sigma / (1.0 - sigma) : (1.0 - sigma) / sigma;
-    const double base = low ? 1.0 - sigma : sigma;
-    double value = 0.0, slope = 0.0, power = 1.0;  // power: base^(n − 1)
-    if (low) {
-        value = value_[n];
-        for (int i = n - 1; i >= 0; --i) {
-            value = value * q + value_[i];
-            slope = slope * q + slope_[i];
-            power *= base;
-        }
-    } else {
-        value = value_[0];
-        for (int i = 1; i <= n; ++i) {
-            value = value * q + value_[i];
-            slope = slope * q + slope_[i - 1];
-            power *= base;
-        }
+    const double s = 1.0 - sigma;
+    double value = value_[n], power = 1.0;
+    for (int i = n - 1; i >= 0; --i) {
+        power *= s;
+        value = value * sigma + value_[i] * power;
     }
-    power /= base;
-    out.value = value * power * base;
-    out.slope = n * slope * power;
+    double slope = slope_[n - 1];
+    power = 1.0;
+    for (int i = n - 2; i >= 0; --i) {
+        power *= s;
+        slope = slope * sigma + slope_[i] * power;
+    }
+    out.value = value;
+    out.slope = n * slope;
     return out;
 }
 

@@ -27,7 +27,10 @@ struct BernsteinBall {
     std::array<double, kMaxDegree + 1> r;
 
     // +1 or −1 when coefficient i is certainly of that sign, 0 when it may be zero.
-    int sign(int i) const { return b[i] - r[i] > 0.0 ? 1 : (b[i] + r[i] < 0.0 ? -1 : 0); }
+    // (Without branches: which way a coefficient goes is what the search cannot predict.)
+    int sign(int i) const {
+        return static_cast<int>(b[i] - r[i] > 0.0) - static_cast<int>(b[i] + r[i] < 0.0);
+    }
 };
 
 // The power-basis ball G(x) = Σ g_k x^k (with radii) on x ∈ [−1, 1], in the Bernstein basis

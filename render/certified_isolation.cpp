@@ -41,13 +41,21 @@ int most_sign_changes(const BernsteinBall& g) {
     return std::max(negative, positive);
 }
 
-Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) {
-    Isolation out;
+namespace {
+
+// isolate_first_root into an Isolation the caller owns (a ball is 0.6 KB: the guided search
+// returns the one it was given rather than copies).
+void isolate_into(const BernsteinBall& g, int max_depth, double end, Isolation& out) {
+    out.kind = Isolation::Kind::no_root;
+    out.lo = 0.0;
+    out.hi = 1.0;
+    out.sign_at_lo = 0;
+    out.work = 0;
     max_depth = std::clamp(max_depth, 0, 52);
     if (g.degree < 0) {
         out.kind = Isolation::Kind::undecided;  // the zero polynomial: every point is a root
         out.piece = g;
-        return out;
+        return;
     }
     // Pending right halves, innermost last; the piece being examined is [a, a + 2^-depth], in
     // `g`, `left` or the stack (no copies: a split may write over the piece it splits).
@@ -75,7 +83,7 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
             out.hi = a + width;
             out.sign_at_lo = first;
             out.piece = *piece;
-            return out;
+            return;
         }
         if (changes != 0) {
             if (depth >= max_depth) {
@@ -83,7 +91,7 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
                 out.lo = a;
                 out.hi = a + width;
                 out.piece = *piece;
-                return out;
+                return;
             }
             ++depth;
             stack_a[top] = a + 0.5 * width;
@@ -95,13 +103,21 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
         }
         if (top == 0) {
             out.kind = Isolation::Kind::no_root;
-            return out;
+            return;
         }
         --top;
         piece = &stack[top];
         a = stack_a[top];
         depth = stack_depth[top];
     }
+}
+
+}  // namespace
+
+Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) {
+    Isolation out;
+    isolate_into(g, max_depth, end, out);
+    return out;
 }
 
 Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double start, double end,
@@ -112,29 +128,27 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     const auto depth_within = [&](double scale) {
         return std::max(0, max_depth + std::ilogb(scale));
     };
+    Isolation out;  // every path returns this one (no copies)
     int work = 0;
-    const auto mapped = [&](Isolation& sub, double base, double scale) -> Isolation& {
-        sub.lo = base + sub.lo * scale;
-        sub.hi = sub.hi == 1.0 ? base + scale : base + sub.hi * scale;
-        sub.work += work;
-        return sub;
-    };
-    // The search of [from, 1] up to `end` without a guess: cut at `from`, bisect the rest.
-    const auto search_from = [&](const BernsteinBall& piece, double from) -> Isolation {
-        if (!(from > 0.0)) {
-            Isolation whole = isolate_first_root(piece, max_depth, end);
-            return mapped(whole, 0.0, 1.0);
-        }
-        BernsteinBall skipped, rest;
-        split_at(piece, from, skipped, rest);
-        ++work;
-        const double scale = 1.0 - from;
-        Isolation sub = isolate_first_root(rest, depth_within(scale), (end - from) / scale);
-        return mapped(sub, from, scale);
+    const auto map_back = [&](double base, double scale) {
+        out.lo = base + out.lo * scale;
+        out.hi = out.hi == 1.0 ? base + scale : base + out.hi * scale;
+        out.work += work;
     };
     const double a = guess - reach, b = guess + reach;
     if (g.degree < 1 || !(a > start) || !(b < std::min(end, 1.0)) || !(b > a)) {
-        return search_from(g, start);
+        // No usable guess: cut at `start`, bisect the rest.
+        if (!(start > 0.0)) {
+            isolate_into(g, max_depth, end, out);
+            return out;
+        }
+        BernsteinBall skipped, rest;
+        split_at(g, start, skipped, rest);
+        ++work;
+        const double scale = 1.0 - start;
+        isolate_into(rest, depth_within(scale), (end - start) / scale, out);
+        map_back(start, scale);
+        return out;
     }
     // [0, a] whole first — the stretch before `start` too: a piece certainly of one sign
     // throughout (the common case) costs one cut; otherwise [start, a] is cut from it.
@@ -150,11 +164,12 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
             base = start;  // within 2u of the cut's exact σ, a·(start/a)
         }
         const double scale = a - base;
-        Isolation first = isolate_first_root(before, depth_within(scale), 1.0);
-        if (first.kind != Isolation::Kind::no_root) {
-            return mapped(first, base, scale);
+        isolate_into(before, depth_within(scale), 1.0, out);
+        if (out.kind != Isolation::Kind::no_root) {
+            map_back(base, scale);
+            return out;
         }
-        work += first.work;
+        work += out.work;
     }
     // The window [a, h], h = a + τ·(1 − a) ≈ b, then [h, 1].
     const double rest = 1.0 - a;
@@ -163,16 +178,17 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     split_at(after, tau, window, beyond);
     ++work;
     const double window_width = tau * rest;
-    Isolation near = isolate_first_root(window, depth_within(window_width), 1.0);
-    if (near.kind != Isolation::Kind::no_root) {
-        return mapped(near, a, window_width);
+    isolate_into(window, depth_within(window_width), 1.0, out);
+    if (out.kind != Isolation::Kind::no_root) {
+        map_back(a, window_width);
+        return out;
     }
-    work += near.work;
+    work += out.work;
     const double h = a + window_width;
     const double beyond_width = 1.0 - h;
-    Isolation last =
-        isolate_first_root(beyond, depth_within(beyond_width), (end - h) / beyond_width);
-    return mapped(last, h, beyond_width);
+    isolate_into(beyond, depth_within(beyond_width), (end - h) / beyond_width, out);
+    map_back(h, beyond_width);
+    return out;
 }
 
 Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) {
@@ -229,6 +245,8 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
             x = next;
         }
         out.estimate = x;
+        out.slope = slope;
+        out.noise = noise;
         if (!(noise < 0.25 * width * std::abs(slope))) {
             return out;
         }

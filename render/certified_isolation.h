@@ -59,6 +59,8 @@ struct Bracket {
     bool certified = false;
     int work = 0;
     double estimate = 0.5;  // the root as the midpoint polynomial places it, in [lo, hi]
+    double slope = 0.0;     // the midpoint polynomial's slope there (per unit of σ)
+    double noise = 0.0;     // the largest radius: the root is within ≈ noise/|slope| of it
 };
 Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width);
 

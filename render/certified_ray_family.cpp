@@ -188,7 +188,7 @@ void CertifiedRayFamily::expand_row(double y, Row& out) const {
             for (int b = n - 1; b >= 0; --b) {
                 value = value * v + in_v[b];
             }
-            out.by_u[i][a] = value;
+            out.by_u[a][i] = value;
         }
     }
 }
@@ -196,15 +196,20 @@ void CertifiedRayFamily::expand_row(double y, Row& out) const {
 void CertifiedRayFamily::ball_at(const Row& row, double x, BernsteinBall& out) const {
     const int n = row.degree;
     out.degree = n;
+    if (n < 0) {
+        return;
+    }
     const double u = std::clamp((x - center_x_) / half_width_, -1.0, 1.0);
+    // Horner in u for every B_i at once.
     for (int i = 0; i <= n; ++i) {
-        const auto& in_u = row.by_u[i];
-        double value = in_u[n];
-        for (int a = n - 1; a >= 0; --a) {
-            value = value * u + in_u[a];
-        }
-        out.b[i] = value;
+        out.b[i] = row.by_u[n][i];
         out.r[i] = radius_[i];
+    }
+    for (int a = n - 1; a >= 0; --a) {
+        const auto& in_u = row.by_u[a];
+        for (int i = 0; i <= n; ++i) {
+            out.b[i] = out.b[i] * u + in_u[i];
+        }
     }
 }
 

@@ -50,8 +50,8 @@ class CertifiedRayFamily {
     double t_start() const { return t_start_; }
     double t_width() const { return t_width_; }
 
-    // The Bernstein coefficients along one image row, as polynomials in u: by_u[i][a] is the
-    // coefficient of u^a in B_i.
+    // The Bernstein coefficients along one image row, as polynomials in u: by_u[a][i] is the
+    // coefficient of u^a in B_i (a pixel's Horner steps then run over i in parallel).
     struct Row {
         int degree = -1;
         std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> by_u;
