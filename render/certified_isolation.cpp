@@ -6,20 +6,79 @@
 
 namespace locus::render {
 
+namespace {
+
+// The sign changes of the coefficients when every sign is certain, −1 otherwise: without
+// branches, unrolled for a degree known at compile time (`Fixed` ≥ 0; −1 reads the ball's).
+template <int Fixed>
+int certain_sign_changes(const BernsteinBall& g) {
+    const int n = Fixed >= 0 ? Fixed : g.degree;
+    bool positive = g.b[0] - g.r[0] > 0.0, negative = g.b[0] + g.r[0] < 0.0;
+    bool uncertain = !(positive || negative);
+    int changes = 0;
+#pragma GCC unroll 16
+    for (int i = 1; i <= n; ++i) {
+        const bool next_positive = g.b[i] - g.r[i] > 0.0, next_negative = g.b[i] + g.r[i] < 0.0;
+        uncertain = uncertain || !(next_positive || next_negative);
+        changes += static_cast<int>((positive && next_negative) || (negative && next_positive));
+        positive = next_positive;
+        negative = next_negative;
+    }
+    return uncertain ? -1 : changes;
+}
+
+}  // namespace
+
 int most_sign_changes(const BernsteinBall& g) {
     // Most pieces have every sign certain: the changes are then counted as they are.
-    int changes = 0, previous = 0;
-    bool uncertain = false;
-    for (int i = 0; i <= g.degree; ++i) {
-        const int s = g.sign(i);
-        if (s == 0) {
-            uncertain = true;
-            break;
-        }
-        changes += previous != 0 && s != previous ? 1 : 0;
-        previous = s;
+    int changes = -1;
+    switch (g.degree) {
+    case -1:
+        break;  // the zero polynomial, below
+    case 0:
+        changes = certain_sign_changes<0>(g);
+        break;
+    case 1:
+        changes = certain_sign_changes<1>(g);
+        break;
+    case 2:
+        changes = certain_sign_changes<2>(g);
+        break;
+    case 3:
+        changes = certain_sign_changes<3>(g);
+        break;
+    case 4:
+        changes = certain_sign_changes<4>(g);
+        break;
+    case 5:
+        changes = certain_sign_changes<5>(g);
+        break;
+    case 6:
+        changes = certain_sign_changes<6>(g);
+        break;
+    case 7:
+        changes = certain_sign_changes<7>(g);
+        break;
+    case 8:
+        changes = certain_sign_changes<8>(g);
+        break;
+    case 9:
+        changes = certain_sign_changes<9>(g);
+        break;
+    case 10:
+        changes = certain_sign_changes<10>(g);
+        break;
+    case 11:
+        changes = certain_sign_changes<11>(g);
+        break;
+    case 12:
+        changes = certain_sign_changes<12>(g);
+        break;
+    default:
+        changes = certain_sign_changes<-1>(g);
+        break;
     }
-    if (!uncertain) {
+    if (changes >= 0) {
         return changes;
     }
     // The most changes of a choice of signs for coefficients 0..i that ends negative (or

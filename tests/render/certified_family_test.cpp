@@ -12,6 +12,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "algebra/compiled.h"
 #include "bench/surface_suite.h"
@@ -189,6 +190,57 @@ TEST(MidpointPolynomial, AgreesWithDeCasteljau) {
                 (evaluate(g, sigma + h).value - evaluate(g, sigma - h).value) / (2.0 * h);
             EXPECT_NEAR(prepared.slope, difference, 1e-5 * (1.0 + std::abs(difference)) * scale);
         }
+    }
+}
+
+// Descartes' bound under uncertainty against brute force: every choice of signs (±1) for the
+// coefficients the ball leaves uncertain, counting the changes of each.
+TEST(MostSignChanges, IsTheMostOverEveryChoiceOfTheUncertainSigns) {
+    std::mt19937_64 random(5);
+    std::uniform_int_distribution<int> kind(0, 2);
+    for (int trial = 0; trial < 3000; ++trial) {
+        BernsteinBall g;
+        g.degree = trial % 15;
+        std::vector<int> uncertain;
+        for (int i = 0; i <= g.degree; ++i) {
+            switch (kind(random)) {
+            case 0:
+                g.b[i] = 1.0;
+                g.r[i] = 0.5;
+                break;
+            case 1:
+                g.b[i] = -1.0;
+                g.r[i] = 0.5;
+                break;
+            default:
+                g.b[i] = 0.25 * (trial % 3 - 1);
+                g.r[i] = 0.5;
+                uncertain.push_back(i);
+                break;
+            }
+        }
+        if (uncertain.size() > 10) {
+            continue;
+        }
+        int most = 0;
+        for (unsigned choice = 0; choice < (1u << uncertain.size()); ++choice) {
+            std::vector<int> signs;
+            std::size_t next = 0;
+            for (int i = 0; i <= g.degree; ++i) {
+                if (next < uncertain.size() && uncertain[next] == i) {
+                    signs.push_back((choice >> next) & 1u ? 1 : -1);
+                    ++next;
+                } else {
+                    signs.push_back(g.b[i] > 0.0 ? 1 : -1);
+                }
+            }
+            int changes = 0;
+            for (std::size_t i = 1; i < signs.size(); ++i) {
+                changes += signs[i] != signs[i - 1] ? 1 : 0;
+            }
+            most = std::max(most, changes);
+        }
+        EXPECT_EQ(most_sign_changes(g), most) << "trial " << trial;
     }
 }
 
