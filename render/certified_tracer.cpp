@@ -121,11 +121,17 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
     double probe_lo = at(bracket.lo) + m, probe_hi = at(bracket.hi) - m;
     using Precision = algebra::CompiledPolynomial::Precision;
     for (const Precision precision : {Precision::double_precision, Precision::double_double}) {
+        // Set when this precision's error bound exceeds what f reaches near the root
+        // (4·|slope|·h, with room for a poor slope): its signs a quarter tolerance from the root
+        // cannot be certain, and the pass ends (at degree 30 the doubles' bound often is).
+        bool hopeless = false;
+        double h = 0.0, slope = 0.0;
         // Evaluates at p; a certain sign moves an end of the bracket.
         const auto probe = [&](double p) {
             ++work;
             const algebra::ValueEnclosure e =
                 f_->enclose_on_line(to_point(ray.origin), to_point(ray.direction), p, precision);
+            hopeless = hopeless || !(e.radius < 4.0 * std::abs(slope) * h);
             if (p >= probe_lo && p <= probe_hi) {
                 if (e.sign() == piece.sign_at_lo) {
                     left = probe_lo = p;
@@ -136,12 +142,13 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
             return e.value + e.value_low;
         };
         const auto done = [&] { return right - left <= tolerance * tolerance_scale(left, right); };
+        const auto stop = [&] { return hopeless || done(); };
         // Newton steps on the point values from the ball's estimate, with the ball's slope
         // (proposals only), then certified signs a quarter tolerance either side, and
         // farther out while the arithmetic cannot tell.
         double x = std::clamp(at(bracket.estimate), probe_lo, probe_hi);
-        const double h = 0.25 * tolerance * std::max(1.0, std::abs(x));
-        const double slope = bracket.slope / span;
+        h = 0.25 * tolerance * std::max(1.0, std::abs(x));
+        slope = bracket.slope / span;
         // Where the ball places the root to within δ ≤ 1.8h (its radii over its slope, with a
         // quarter to spare), certain signs at x ± δ close the bracket at once: two probes,
         // where a Newton probe first needs three.
@@ -150,7 +157,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
             probe(x - blur);
             probe(x + blur);
         }
-        for (int step = 0; step < 6 && !done(); ++step) {
+        for (int step = 0; step < 6 && !stop(); ++step) {
             const double value = probe(x);
             const double next = std::clamp(x - value / slope, probe_lo, probe_hi);
             if (!std::isfinite(next)) {
@@ -168,7 +175,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
         // The farther end first: after a Newton probe the nearer end is often close enough.
         const int farther = x - left <= right - x ? 1 : -1;
         for (int side : {farther, -farther}) {
-            for (double step = h; !done(); step *= 8.0) {
+            for (double step = h; !stop(); step *= 8.0) {
                 const double p = x + side * step;
                 if (!(p > probe_lo && p < probe_hi)) {
                     break;
@@ -181,7 +188,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
             }
         }
         // What is left: bisection on certain signs, while they stay certain.
-        for (int iteration = 0; iteration < 80 && !done(); ++iteration) {
+        for (int iteration = 0; iteration < 80 && !stop(); ++iteration) {
             const double before = right - left;
             probe(0.5 * (probe_lo + probe_hi));
             if (!(right - left < before)) {
