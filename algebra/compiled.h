@@ -77,10 +77,11 @@ class CompiledPolynomial {
 
     // Certified value of the exact (rational) f at the point o + t·d, where the doubles o, d
     // and t are read exactly, with a rigorous bound on every rounding (of the point, the
-    // coefficients and the evaluation; see compiled.cpp). In `Precision::double_precision` a
-    // running error bound in doubles, about u·Σ|partial results|, at three times the cost of
-    // value(); in `Precision::double_double` in double-double arithmetic, with a radius near
-    // 1e-31 of Σ|c|·|x|^a|y|^b|z|^c, at twenty times. Not finite when the evaluation overflows.
+    // coefficients and the evaluation; see compiled.cpp). In `Precision::double_precision` an
+    // a-priori bound in doubles, γ_N·Σ|c|·|x|^a|y|^b|z|^c for the N roundings a term meets, at
+    // twice the cost of value(); in `Precision::double_double` in double-double arithmetic, with a
+    // radius near 1e-31 of Σ|c|·|x|^a|y|^b|z|^c, at twenty times. Not finite when the evaluation
+    // overflows.
     enum class Precision { double_precision, double_double };
     ValueEnclosure enclose_on_line(const Point3& origin, const Point3& direction, double t,
                                    Precision precision = Precision::double_double) const;
