@@ -196,6 +196,33 @@ Point3 CompiledPolynomial::gradient(const Point3& p) const {
     return {even_x + odd_x, even_y + odd_y, even_z + odd_z};
 }
 
+namespace {
+
+// The powers 0..degree of a point's coordinates (in the evaluation's arithmetic) and of their
+// magnitudes (in doubles, for the error bound), for enclose_on_line.
+template <typename Value>
+struct PowerTables {
+    using Row = std::array<Value, kMaxCompiledDegree + 1>;
+    using MagnitudeRow = std::array<double, kMaxCompiledDegree + 1>;
+    Row xs, ys, zs;
+    MagnitudeRow axs, ays, azs;
+    void fill(const std::array<Value, 3>& point, const std::array<double, 3>& magnitude,
+              const Value& one, int degree) {
+        xs[0] = ys[0] = zs[0] = one;
+        axs[0] = ays[0] = azs[0] = 1.0;
+        for (int k = 1; k <= degree; ++k) {
+            xs[k] = xs[k - 1] * point[0];
+            ys[k] = ys[k - 1] * point[1];
+            zs[k] = zs[k - 1] * point[2];
+            axs[k] = axs[k - 1] * magnitude[0];
+            ays[k] = ays[k - 1] * magnitude[1];
+            azs[k] = azs[k - 1] * magnitude[2];
+        }
+    }
+};
+
+}  // namespace
+
 ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& direction,
                                                    double t, Precision precision) const {
     if (precision == Precision::double_precision) {
@@ -211,17 +238,9 @@ ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const P
             point[axis] = std::fma(t, direction[axis], origin[axis]);
             magnitude[axis] = std::abs(point[axis]);
         }
-        using Powers = std::array<double, kMaxCompiledDegree + 1>;
-        Powers xs, ys, zs, axs, ays, azs;
-        xs[0] = ys[0] = zs[0] = axs[0] = ays[0] = azs[0] = 1.0;
-        for (int k = 1; k <= degree_; ++k) {
-            xs[k] = xs[k - 1] * point[0];
-            ys[k] = ys[k - 1] * point[1];
-            zs[k] = zs[k - 1] * point[2];
-            axs[k] = axs[k - 1] * magnitude[0];
-            ays[k] = ays[k - 1] * magnitude[1];
-            azs[k] = azs[k - 1] * magnitude[2];
-        }
+        PowerTables<double> powers;
+        powers.fill(point, magnitude, 1.0, degree_);
+        const auto& [xs, ys, zs, axs, ays, azs] = powers;
         double sum = 0.0, scale = 0.0;
         for (const Group& g : groups_) {
             double in_z = 0.0, scale_in_z = 0.0;
@@ -250,20 +269,9 @@ ValueEnclosure CompiledPolynomial::enclose_on_line(const Point3& origin, const P
         point[axis] = detail::from_double(origin[axis]) + detail::two_product(t, direction[axis]);
         magnitude[axis] = std::abs(point[axis].hi) * (1.0 + 0x1.0p-51);
     }
-    using DoublePowers = std::array<double, kMaxCompiledDegree + 1>;
-    using WidePowers = std::array<DoubleDouble, kMaxCompiledDegree + 1>;
-    WidePowers xs, ys, zs;
-    DoublePowers axs, ays, azs;
-    xs[0] = ys[0] = zs[0] = detail::from_double(1.0);
-    axs[0] = ays[0] = azs[0] = 1.0;
-    for (int k = 1; k <= degree_; ++k) {
-        xs[k] = xs[k - 1] * point[0];
-        ys[k] = ys[k - 1] * point[1];
-        zs[k] = zs[k - 1] * point[2];
-        axs[k] = axs[k - 1] * magnitude[0];
-        ays[k] = ays[k - 1] * magnitude[1];
-        azs[k] = azs[k - 1] * magnitude[2];
-    }
+    PowerTables<DoubleDouble> powers;
+    powers.fill(point, magnitude, detail::from_double(1.0), degree_);
+    const auto& [xs, ys, zs, axs, ays, azs] = powers;
     DoubleDouble sum;
     double scale = 0.0;  // Σ |c̃|·|x|^a|y|^b|z|^c, up to the rounding of its own evaluation
     for (const Group& g : groups_) {
