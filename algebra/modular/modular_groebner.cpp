@@ -13,6 +13,7 @@
 #include "algebra/error.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/fglm.h"
+#include "algebra/modular/rational_lift.h"
 
 namespace locus::algebra {
 
@@ -26,18 +27,11 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One coefficient being lifted: its residues modulo the group's primes, in their order (0 where
-// a prime's basis lacks the term), and its rational value once one has been reconstructed.
-// The Chinese remainder theorem runs only to reconstruct, on all of a coefficient's residues at
-// once (fmpz_multi_CRT_ui's product tree): folding every prime into a GMP integer as it came
-// (fmpz_CRT_ui) cost a multiprecision step per coefficient and prime, 1.1 of katsura-10's 13 s.
-// A value, once found, is only checked against the primes that come after (n ≡ d·r mod p, in
-// words): reconstructing every coefficient again at every attempt cost 0.6 s more there.
+// One coefficient being lifted (modular/rational_lift.h): its residues modulo the group's
+// primes, 0 where a prime's basis lacks the term.
 struct LiftedTerm {
     std::vector<std::uint64_t> monomial;
-    std::vector<mp_limb_t> residues;
-    Rational value;
-    std::size_t value_primes = 0;  // the value agrees with the first value_primes residues
+    modular::LiftedNumber coefficient;
 };
 using LiftedElement = std::vector<LiftedTerm>;  // terms descending
 
@@ -45,19 +39,12 @@ using LiftedElement = std::vector<LiftedTerm>;  // terms descending
 struct Group {
     std::vector<std::uint64_t> signature;
     std::vector<LiftedElement> elements;
-    Integer modulus{1};
-    std::size_t primes = 0;
+    modular::RationalLift lift;
     std::size_t first_prime_position = 0;  // ties in the majority go to the earlier group
     std::optional<std::vector<Polynomial>> candidate;
     // The coefficient whose reconstruction failed last (element, term): tried first next time.
     std::size_t hard_element = 0, hard_term = 0;
-    std::vector<mp_limb_t> prime_list;  // the group's primes, in the order of the residues
-    // Reconstruction is next attempted with this many primes. Rational reconstruction of a
-    // coefficient of n words costs O(n²) (Lehmer), so attempting after every prime made lifting
-    // quadratic in the primes: 1813 primes for the atlas' explode_rational_lex took 33 s of
-    // lifting. Past 64 primes an attempt waits for 1/32 more primes, which costs at most 3 %
-    // more primes than needed and keeps the attempts' total a small multiple of the last one.
-    std::size_t next_attempt_primes = 0;
+    std::size_t primes() const { return lift.primes(); }
 };
 
 std::vector<std::uint64_t> signature_of(const std::vector<ModularPolynomial>& basis,
@@ -74,14 +61,14 @@ std::vector<std::uint64_t> signature_of(const std::vector<ModularPolynomial>& ba
 void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std::uint32_t p,
                   const MonomialLayout& layout) {
     const std::size_t words = layout.words();
-    if (group.primes == 0) {
+    if (group.primes() == 0) {
         group.elements.clear();
         for (const ModularPolynomial& g : basis) {
             LiftedElement element(g.size());
             for (std::size_t i = 0; i < g.size(); ++i) {
                 const std::uint64_t* m = g.monomial(i, words);
                 element[i].monomial.assign(m, m + words);
-                element[i].residues.push_back(g.coefficients[i]);
+                element[i].coefficient.residues.push_back(g.coefficients[i]);
             }
             group.elements.push_back(std::move(element));
         }
@@ -97,7 +84,7 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
             }
             if (same_support) {
                 for (std::size_t i = 0; i < g.size(); ++i) {
-                    old[i].residues.push_back(g.coefficients[i]);
+                    old[i].coefficient.residues.push_back(g.coefficients[i]);
                 }
                 continue;
             }
@@ -123,34 +110,16 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
                 } else {
                     const std::uint64_t* m = g.monomial(b, words);
                     term.monomial.assign(m, m + words);
-                    term.residues.assign(group.primes, 0);
+                    term.coefficient.residues.assign(group.primes(), 0);
                     residue = g.coefficients[b++];
                 }
-                term.residues.push_back(residue);
+                term.coefficient.residues.push_back(residue);
                 merged.push_back(std::move(term));
             }
             old = std::move(merged);
         }
     }
-    fmpz_mul_ui(group.modulus.get(), group.modulus.get(), p);
-    group.prime_list.push_back(p);
-    ++group.primes;
-}
-
-// Whether the term's value n/d agrees with its residues from the value's primes on:
-// n ≡ d·r (mod p), with p ∤ d.
-bool value_agrees(LiftedTerm& term, const Group& group) {
-    for (std::size_t i = term.value_primes; i < group.primes; ++i) {
-        const mp_limb_t p = group.prime_list[i];
-        const ulong n = fmpz_fdiv_ui(fmpq_numref(term.value.get()), p);
-        const ulong d = fmpz_fdiv_ui(fmpq_denref(term.value.get()), p);
-        if (d == 0 || n != n_mulmod2_preinv(d, term.residues[i], p, n_preinvert_limb(p))) {
-            term.value_primes = 0;
-            return false;
-        }
-    }
-    term.value_primes = group.primes;
-    return true;
+    group.lift.add_prime(p);
 }
 
 // Rational reconstruction of every coefficient; nothing when one fails. The coefficient that
@@ -163,30 +132,11 @@ bool value_agrees(LiftedTerm& term, const Group& group) {
 std::optional<std::vector<Polynomial>> reconstruct(
     Group& group, const RingPtr& ring,
     const std::optional<std::chrono::steady_clock::time_point>& deadline) {
-    if (group.primes < group.next_attempt_primes) {
+    if (!group.lift.attempt_due()) {
         return std::nullopt;
     }
-    group.next_attempt_primes = group.primes + (group.primes < 64 ? 1 : group.primes / 32);
-    fmpz_comb_t comb;
-    fmpz_comb_init(comb, group.prime_list.data(), static_cast<slong>(group.prime_list.size()));
-    fmpz_comb_temp_t temp;
-    fmpz_comb_temp_init(temp, comb);
-    Integer residue;
-    auto reconstructs = [&](LiftedTerm& term) {
-        if (term.value_primes > 0 && value_agrees(term, group)) {
-            return true;
-        }
-        fmpz_multi_CRT_ui(residue.get(), term.residues.data(), comb, temp, 0);  // in [0, M)
-        if (!fmpz_is_zero(residue.get()) &&
-            fmpq_reconstruct_fmpz(term.value.get(), residue.get(), group.modulus.get()) == 0) {
-            return false;
-        }
-        if (fmpz_is_zero(residue.get())) {
-            fmpq_zero(term.value.get());
-        }
-        term.value_primes = group.primes;
-        return true;
-    };
+    modular::RationalLift::Attempt attempt(group.lift);
+    auto reconstructs = [&](LiftedTerm& term) { return attempt.reconstruct(term.coefficient); };
     std::optional<std::vector<Polynomial>> result;
     bool stopped = false;
     [&] {
@@ -201,7 +151,7 @@ std::optional<std::vector<Polynomial>> reconstruct(
         std::vector<Polynomial> basis(count, Polynomial(ring));
         for (std::size_t i = 0; i < count; ++i) {
             if (deadline_passed(deadline)) {
-                stopped = true;  // thrown below, once the CRT tables are freed
+                stopped = true;  // thrown below, outside the attempt
                 return;
             }
             const std::size_t e = (first + i) % count;
@@ -213,15 +163,13 @@ std::optional<std::vector<Polynomial>> reconstruct(
                     group.hard_term = t;
                     return;
                 }
-                if (!fmpq_is_zero(term.value.get())) {
-                    poly.push_back_term(term.value, term.monomial.data());
+                if (!fmpq_is_zero(term.coefficient.value.get())) {
+                    poly.push_back_term(term.coefficient.value, term.monomial.data());
                 }
             }
         }
         result = std::move(basis);
     }();
-    fmpz_comb_temp_clear(temp);
-    fmpz_comb_clear(comb);
     if (stopped) {
         throw Timeout("rational reconstruction");
     }
@@ -460,8 +408,10 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         auto group = std::find_if(groups.begin(), groups.end(),
                                   [&](const Group& g) { return g.signature == signature; });
         if (group == groups.end()) {
-            groups.push_back(
-                {signature, {}, Integer(1), 0, s.primes_used.size(), std::nullopt, 0, 0, {}, 0});
+            Group fresh;
+            fresh.signature = signature;
+            fresh.first_prime_position = s.primes_used.size();
+            groups.push_back(std::move(fresh));
             group = groups.end() - 1;
         }
         // The candidate of this group, built from other primes, meets a fresh prime; it is
@@ -469,10 +419,10 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         std::size_t largest_other = 0;
         for (const Group& g : groups) {
             if (&g != &*group) {
-                largest_other = std::max(largest_other, g.primes);
+                largest_other = std::max(largest_other, g.primes());
             }
         }
-        if (group->candidate && group->primes + 1 > largest_other &&
+        if (group->candidate && group->primes() + 1 > largest_other &&
             agrees_modulo(*group->candidate, basis, field)) {
             s.lift_seconds += seconds_since(lift_start);
             std::vector<Polynomial> candidate = *group->candidate;
@@ -497,7 +447,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 }
                 s.certified = true;
             }
-            std::size_t in_group = group->primes;
+            std::size_t in_group = group->primes();
             s.unlucky_primes = s.primes_used.size() - 1 - in_group;
             result.basis = std::move(candidate);
             result.stats.seconds = seconds_since(start);

@@ -1,31 +1,35 @@
 #include "implicit/detail/modular_lifting.h"
 
-#include <flint/fmpq.h>
-#include <flint/fmpz.h>
 #include <flint/ulong_extras.h>
 
 namespace locus::implicit::detail {
 
 NormalizedLifting::NormalizedLifting(std::size_t size, std::size_t pivot)
-    : pivot_(pivot), residues_(size), current_(size) {}
+    : pivot_(pivot), numbers_(size), current_(size) {}
 
 bool NormalizedLifting::add(const std::vector<ulong>& image, ulong p) {
     const ulong pinv = n_preinvert_limb(p);
     const ulong scale = n_invmod(image[pivot_], p);
-    for (std::size_t j = 0; j < residues_.size(); ++j) {
-        const ulong v = n_mulmod2_preinv(image[j], scale, p, pinv);
-        fmpz_CRT_ui(residues_[j].get(), residues_[j].get(), modulus_.get(), v, p, 0);
+    for (std::size_t j = 0; j < numbers_.size(); ++j) {
+        numbers_[j].residues.push_back(n_mulmod2_preinv(image[j], scale, p, pinv));
     }
-    fmpz_mul_ui(modulus_.get(), modulus_.get(), p);
-    ++primes_;
-    bool reconstructed = true;
-    for (std::size_t j = 0; j < residues_.size() && reconstructed; ++j) {
-        reconstructed =
-            fmpq_reconstruct_fmpz(current_[j].get(), residues_[j].get(), modulus_.get()) != 0;
-    }
-    if (!reconstructed || current_ != previous_) {
-        previous_ = current_;
+    lift_.add_prime(p);
+    if (!lift_.attempt_due()) {
         return false;
+    }
+    algebra::modular::RationalLift::Attempt attempt(lift_);
+    bool confirmed = true;
+    for (algebra::modular::LiftedNumber& number : numbers_) {
+        if (!attempt.reconstruct(number)) {
+            return false;
+        }
+        confirmed = confirmed && number.confirmed();
+    }
+    if (!confirmed) {
+        return false;
+    }
+    for (std::size_t j = 0; j < numbers_.size(); ++j) {
+        current_[j] = numbers_[j].value;
     }
     return true;
 }

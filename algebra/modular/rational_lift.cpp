@@ -1,0 +1,68 @@
+#include "algebra/modular/rational_lift.h"
+
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+#include <flint/ulong_extras.h>
+
+namespace locus::algebra::modular {
+
+void RationalLift::add_prime(mp_limb_t p) {
+    fmpz_mul_ui(modulus_.get(), modulus_.get(), p);
+    primes_.push_back(p);
+}
+
+bool RationalLift::attempt_due() {
+    const std::size_t k = primes_.size();
+    if (k < next_attempt_) {
+        return false;
+    }
+    next_attempt_ = k + (k < 64 ? 1 : k / 32);
+    return true;
+}
+
+RationalLift::Attempt::Attempt(const RationalLift& lift) : lift_(lift) {
+    fmpz_comb_init(comb_, lift.primes_.data(), static_cast<slong>(lift.primes_.size()));
+    fmpz_comb_temp_init(temp_, comb_);
+}
+
+RationalLift::Attempt::~Attempt() {
+    fmpz_comb_temp_clear(temp_);
+    fmpz_comb_clear(comb_);
+}
+
+namespace {
+
+// Whether the value n/d agrees with the residues from value_primes on: n ≡ d·r (mod p), p ∤ d.
+bool value_agrees(LiftedNumber& number, const std::vector<mp_limb_t>& primes) {
+    for (std::size_t i = number.value_primes; i < primes.size(); ++i) {
+        const mp_limb_t p = primes[i];
+        const ulong n = fmpz_fdiv_ui(fmpq_numref(number.value.get()), p);
+        const ulong d = fmpz_fdiv_ui(fmpq_denref(number.value.get()), p);
+        if (d == 0 || n != n_mulmod2_preinv(d, number.residues[i], p, n_preinvert_limb(p))) {
+            number.value_primes = 0;
+            return false;
+        }
+    }
+    number.value_primes = primes.size();
+    return true;
+}
+
+}  // namespace
+
+bool RationalLift::Attempt::reconstruct(LiftedNumber& number) {
+    const std::vector<mp_limb_t>& primes = lift_.primes_;
+    if (number.value_primes > 0 && value_agrees(number, primes)) {
+        return true;
+    }
+    fmpz_multi_CRT_ui(residue_.get(), number.residues.data(), comb_, temp_, 0);  // in [0, M)
+    if (fmpz_is_zero(residue_.get())) {
+        fmpq_zero(number.value.get());
+    } else if (fmpq_reconstruct_fmpz(number.value.get(), residue_.get(), lift_.modulus_.get()) ==
+               0) {
+        return false;
+    }
+    number.value_primes = number.found_with = primes.size();
+    return true;
+}
+
+}  // namespace locus::algebra::modular

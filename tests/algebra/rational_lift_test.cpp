@@ -1,0 +1,140 @@
+// The one lifting machinery (algebra/modular/rational_lift.h) against numbers chosen here:
+// residues are computed with FLINT's integer division and inverse (no lifting code), and the
+// lift must give back the rational — small, huge (hundreds of digits), negative, zero — once
+// enough primes are in, never a wrong value reported as confirmed, and it must notice a number
+// whose residues change (an unlucky prime).
+#include <gtest/gtest.h>
+
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+#include <flint/ulong_extras.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "algebra/modular/rational_lift.h"
+
+namespace locus::algebra::modular {
+namespace {
+
+mp_limb_t residue_of(const Rational& q, mp_limb_t p) {
+    const ulong n = fmpz_fdiv_ui(fmpq_numref(q.get()), p);
+    const ulong d = fmpz_fdiv_ui(fmpq_denref(q.get()), p);
+    return n_mulmod2_preinv(n, n_invmod(d, p), p, n_preinvert_limb(p));
+}
+
+// The largest prime below p (odd p > 3).
+mp_limb_t prime_below(mp_limb_t p) {
+    do {
+        p -= 2;
+    } while (!n_is_prime(p));
+    return p;
+}
+
+Rational random_rational(std::mt19937_64& random, int digits) {
+    std::string numerator = random() % 2 == 0 ? "-" : "";
+    numerator += std::to_string(1 + random() % 9);
+    for (int i = 1; i < digits; ++i) {
+        numerator += std::to_string(random() % 10);
+    }
+    std::string denominator = std::to_string(1 + random() % 9);
+    for (int i = 1; i < digits / 2; ++i) {
+        denominator += std::to_string(random() % 10);
+    }
+    Rational q;
+    fmpq_set_str(q.get(), (numerator + "/" + denominator).c_str(), 10);
+    fmpq_canonicalise(q.get());
+    return q;
+}
+
+TEST(RationalLift, GivesBackRationalsOfEverySize) {
+    std::mt19937_64 random(3);
+    for (const bool wide_primes : {false, true}) {
+        for (const int digits : {1, 5, 40, 300}) {
+            std::vector<Rational> truth;
+            for (int i = 0; i < 20; ++i) {
+                truth.push_back(i == 0 ? Rational() : random_rational(random, digits));
+            }
+            std::vector<LiftedNumber> numbers(truth.size());
+            RationalLift lift;
+            // Distinct primes: above 2^62 upwards (the interpolation's) or below 2^31
+            // downwards (the Gröbner route's).
+            mp_limb_t p = wide_primes ? n_nextprime(UWORD(1) << 62, 1) : (1u << 31) + 1;
+            bool done = false;
+            for (int k = 0; k < 400 && !done; ++k) {
+                p = wide_primes ? n_nextprime(p, 1) : prime_below(p);
+                for (std::size_t i = 0; i < truth.size(); ++i) {
+                    numbers[i].residues.push_back(residue_of(truth[i], p));
+                }
+                lift.add_prime(p);
+                if (!lift.attempt_due()) {
+                    continue;
+                }
+                RationalLift::Attempt attempt(lift);
+                done = true;
+                for (LiftedNumber& number : numbers) {
+                    done = attempt.reconstruct(number) && number.confirmed() && done;
+                }
+            }
+            ASSERT_TRUE(done) << digits << " digits";
+            for (std::size_t i = 0; i < truth.size(); ++i) {
+                EXPECT_TRUE(fmpq_equal(numbers[i].value.get(), truth[i].get()))
+                    << digits << " digits, number " << i;
+            }
+            // Enough primes and not many more: about 2·(digits + digits/2)·log2(10) bits.
+            const double bits_needed = 2.0 * 1.5 * digits * 3.33;
+            const double bits_per_prime = wide_primes ? 62.0 : 31.0;
+            EXPECT_LE(static_cast<double>(lift.primes()), bits_needed / bits_per_prime * 1.1 + 4);
+        }
+    }
+}
+
+TEST(RationalLift, AValueStopsBeingConfirmedWhenAPrimeDisagrees) {
+    // A number whose first two primes' residues are those of 1/3 and the later ones those of
+    // 5/7 (an unlucky pair of primes, then the true residues): 1/3 is confirmed by the second
+    // prime, and never again once a prime disagrees — the mixed residues have no confirmed
+    // value at all (the callers keep unlucky primes out: groups by leading monomials, kernels
+    // of the wrong dimension).
+    const Rational third(1, 3), other(5, 7);
+    LiftedNumber number;
+    RationalLift lift;
+    mp_limb_t p = (1u << 31) + 1;
+    for (int k = 0; k < 8; ++k) {
+        p = prime_below(p);
+        number.residues.push_back(residue_of(k < 2 ? third : other, p));
+        lift.add_prime(p);
+        RationalLift::Attempt attempt(lift);
+        const bool confirmed = attempt.reconstruct(number) && number.confirmed();
+        if (k == 1) {
+            EXPECT_TRUE(confirmed);
+            EXPECT_TRUE(fmpq_equal(number.value.get(), third.get()));
+        }
+        if (k >= 2) {
+            EXPECT_FALSE(confirmed) << "after " << k + 1 << " primes";
+        }
+    }
+}
+
+TEST(RationalLift, AttemptsAfterEveryPrimeThenSpacedOut) {
+    RationalLift lift;
+    std::vector<std::size_t> attempts;
+    mp_limb_t p = (1u << 31) + 1;
+    for (int k = 0; k < 200; ++k) {
+        p = prime_below(p);
+        lift.add_prime(p);
+        if (lift.attempt_due()) {
+            attempts.push_back(lift.primes());
+        }
+    }
+    // 1 … 64, then every 1/32 more: 66, 68, … (at 64 + 64/32 = 66).
+    ASSERT_GE(attempts.size(), 64u);
+    for (std::size_t i = 0; i < 64; ++i) {
+        EXPECT_EQ(attempts[i], i + 1);
+    }
+    EXPECT_EQ(attempts[64], 66u);
+    EXPECT_LT(attempts.size(), 120u);
+}
+
+}  // namespace
+}  // namespace locus::algebra::modular
