@@ -16,6 +16,7 @@
 #include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
+#include "algebra/modular/modular_polynomial.h"
 #include "implicit/detail/modular_lifting.h"
 
 namespace locus::implicit {
@@ -190,11 +191,12 @@ class ModMatrix {
 // the values at the nodes is the coefficient vector.
 ModMatrix inverse_vandermonde(std::size_t d, ulong p) {
     ModMatrix v(d + 1, d + 1, p);
+    const algebra::modular::PrimeField field(p);
     for (std::size_t i = 0; i <= d; ++i) {
         ulong power = 1;
         for (std::size_t j = 0; j <= d; ++j) {
             v.at(i, j) = power;
-            power = n_mulmod2_preinv(power, i % p, p, n_preinvert_limb(p));
+            power = field.multiply(power, i % p);
         }
     }
     ModMatrix inverse(d + 1, d + 1, p);

@@ -24,6 +24,7 @@
 
 #include "algebra/deadline.h"
 #include "algebra/error.h"
+#include "algebra/modular/modular_polynomial.h"
 #include "implicit/detail/modular_lifting.h"
 #include "implicit/implicitize.h"
 
@@ -38,41 +39,23 @@ namespace {
 // bicubic patch; one elimination modulo p then takes about a second.
 constexpr std::size_t kMaxSupport = 1330;
 
-// A polynomial's coefficients modulo p; `usable` is false when p divides a denominator.
-struct ModularPolynomial {
-    std::vector<ulong> coefficients;
-    std::vector<std::vector<std::uint32_t>> exponents;
-    bool usable = true;
-};
+using algebra::modular::PrimeField;
+using algebra::modular::WideModularPolynomial;
 
-ModularPolynomial reduce(const Polynomial& f, ulong p) {
-    ModularPolynomial r;
-    for (std::size_t i = 0; i < f.num_terms(); ++i) {
-        const fmpq* c = f.coefficient(i).get();
-        const ulong denominator = fmpz_fdiv_ui(fmpq_denref(c), p);
-        if (denominator == 0) {
-            r.usable = false;
-            return r;
-        }
-        const ulong numerator = fmpz_fdiv_ui(fmpq_numref(c), p);
-        r.coefficients.push_back(
-            n_mulmod2_preinv(numerator, n_invmod(denominator, p), p, n_preinvert_limb(p)));
-        r.exponents.push_back(f.exponents(i));
-    }
-    return r;
-}
-
-ulong evaluate(const ModularPolynomial& f, const std::vector<ulong>& point, ulong p, ulong pinv) {
+// f at a point modulo p (the point's coordinates in the order of f's variables).
+ulong evaluate(const WideModularPolynomial& f, const algebra::PolyRing& ring,
+               const std::vector<ulong>& point, const PrimeField& field) {
+    std::vector<std::uint32_t> exponents(ring.num_vars());
     ulong sum = 0;
-    for (std::size_t i = 0; i < f.coefficients.size(); ++i) {
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        ring.layout().unpack(f.monomial(i, ring.words()), exponents);
         ulong term = f.coefficients[i];
         for (std::size_t k = 0; k < point.size(); ++k) {
-            if (f.exponents[i][k] != 0) {
-                term = n_mulmod2_preinv(
-                    term, n_powmod2_preinv(point[k], f.exponents[i][k], p, pinv), p, pinv);
+            if (exponents[k] != 0) {
+                term = field.multiply(term, field.power(point[k], exponents[k]));
             }
         }
-        sum = n_addmod(sum, term, p);
+        sum = field.add(sum, term);
     }
     return sum;
 }
@@ -108,14 +91,18 @@ struct ModularKernel {
 ModularKernel kernel_mod(const Parametrization& map,
                          const std::vector<std::vector<std::uint32_t>>& support, ulong p,
                          std::mt19937_64& rng) {
-    const ulong pinv = n_preinvert_limb(p);
-    std::vector<ModularPolynomial> numerators, denominators;
+    const PrimeField field(p);
+    std::vector<WideModularPolynomial> numerators, denominators;
     for (const auto& component : map.components) {
-        numerators.push_back(reduce(component.numerator(), p));
-        denominators.push_back(reduce(component.denominator(), p));
-        if (!numerators.back().usable || !denominators.back().usable) {
+        auto numerator =
+            algebra::modular::reduce_modulo<std::uint64_t>(component.numerator(), field);
+        auto denominator =
+            algebra::modular::reduce_modulo<std::uint64_t>(component.denominator(), field);
+        if (!numerator || !denominator) {
             return {};
         }
+        numerators.push_back(std::move(*numerator));
+        denominators.push_back(std::move(*denominator));
     }
     const std::size_t columns = support.size();
     const std::size_t rows = columns + 8;
@@ -132,20 +119,21 @@ ModularKernel kernel_mod(const Parametrization& map,
             }
             defined = true;
             for (std::size_t i = 0; i < map.components.size(); ++i) {
-                const ulong q = evaluate(denominators[i], point, p, pinv);
+                const ulong q = evaluate(denominators[i], *map.components[i].denominator().ring(),
+                                         point, field);
                 if (q == 0) {
                     defined = false;
                     break;
                 }
-                coordinates[i] = n_mulmod2_preinv(evaluate(numerators[i], point, p, pinv),
-                                                  n_invmod(q, p), p, pinv);
+                coordinates[i] = field.multiply(
+                    evaluate(numerators[i], *map.components[i].numerator().ring(), point, field),
+                    field.inverse(q));
             }
         }
         for (std::size_t j = 0; j < columns; ++j) {
             ulong value = 1;
             for (std::size_t k = 0; k < coordinates.size(); ++k) {
-                value = n_mulmod2_preinv(
-                    value, n_powmod2_preinv(coordinates[k], support[j][k], p, pinv), p, pinv);
+                value = field.multiply(value, field.power(coordinates[k], support[j][k]));
             }
             nmod_mat_entry(matrix, row, j) = value;
         }

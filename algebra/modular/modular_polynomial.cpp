@@ -5,8 +5,12 @@
 
 namespace locus::algebra::modular {
 
-std::uint64_t PrimeField::inverse(std::uint64_t a) const {
-    return n_invmod(a, p);
+std::optional<std::uint64_t> PrimeField::residue(const fmpq* q) const {
+    const std::uint64_t denominator = fmpz_fdiv_ui(fmpq_denref(q), p);
+    if (denominator == 0) {
+        return std::nullopt;
+    }
+    return multiply(fmpz_fdiv_ui(fmpq_numref(q), p), inverse(denominator));
 }
 
 std::uint32_t previous_prime(std::uint32_t bound) {
@@ -17,27 +21,31 @@ std::uint32_t previous_prime(std::uint32_t bound) {
     return static_cast<std::uint32_t>(candidate);
 }
 
-std::optional<ModularPolynomial> reduce_modulo(const Polynomial& f, const PrimeField& field) {
+template <typename Coefficient>
+std::optional<BasicModularPolynomial<Coefficient>> reduce_modulo(const Polynomial& f,
+                                                                 const PrimeField& field) {
     const std::size_t words = f.ring()->words();
-    ModularPolynomial out;
+    BasicModularPolynomial<Coefficient> out;
     out.monomials.reserve(f.num_terms() * words);
     out.coefficients.reserve(f.num_terms());
     for (std::size_t i = 0; i < f.num_terms(); ++i) {
-        const fmpq* c = f.coefficient(i).get();
-        const std::uint64_t denominator = fmpz_fdiv_ui(fmpq_denref(c), field.p);
-        if (denominator == 0) {
+        const std::optional<std::uint64_t> c = field.residue(f.coefficient(i).get());
+        if (!c) {
             return std::nullopt;
         }
-        const std::uint64_t numerator = fmpz_fdiv_ui(fmpq_numref(c), field.p);
-        if (numerator == 0) {
+        if (*c == 0) {
             continue;
         }
-        out.coefficients.push_back(
-            static_cast<std::uint32_t>(field.multiply(numerator, field.inverse(denominator))));
+        out.coefficients.push_back(static_cast<Coefficient>(*c));
         const std::uint64_t* m = f.monomial(i);
         out.monomials.insert(out.monomials.end(), m, m + words);
     }
     return out;
 }
+
+template std::optional<ModularPolynomial> reduce_modulo<std::uint32_t>(const Polynomial&,
+                                                                       const PrimeField&);
+template std::optional<WideModularPolynomial> reduce_modulo<std::uint64_t>(const Polynomial&,
+                                                                           const PrimeField&);
 
 }  // namespace locus::algebra::modular

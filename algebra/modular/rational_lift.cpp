@@ -1,8 +1,9 @@
 #include "algebra/modular/rational_lift.h"
 
+#include "algebra/modular/modular_polynomial.h"
+
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
-#include <flint/ulong_extras.h>
 
 namespace locus::algebra::modular {
 
@@ -35,10 +36,10 @@ namespace {
 // Whether the value n/d agrees with the residues from value_primes on: n ≡ d·r (mod p), p ∤ d.
 bool value_agrees(LiftedNumber& number, const std::vector<mp_limb_t>& primes) {
     for (std::size_t i = number.value_primes; i < primes.size(); ++i) {
-        const mp_limb_t p = primes[i];
-        const ulong n = fmpz_fdiv_ui(fmpq_numref(number.value.get()), p);
-        const ulong d = fmpz_fdiv_ui(fmpq_denref(number.value.get()), p);
-        if (d == 0 || n != n_mulmod2_preinv(d, number.residues[i], p, n_preinvert_limb(p))) {
+        const PrimeField field(primes[i]);
+        const ulong n = fmpz_fdiv_ui(fmpq_numref(number.value.get()), field.p);
+        const ulong d = fmpz_fdiv_ui(fmpq_denref(number.value.get()), field.p);
+        if (d == 0 || n != field.multiply(d, number.residues[i])) {
             number.value_primes = 0;
             return false;
         }

@@ -1,6 +1,6 @@
 #include "implicit/detail/modular_lifting.h"
 
-#include <flint/ulong_extras.h>
+#include "algebra/modular/modular_polynomial.h"
 
 namespace locus::implicit::detail {
 
@@ -8,10 +8,10 @@ NormalizedLifting::NormalizedLifting(std::size_t size, std::size_t pivot)
     : pivot_(pivot), numbers_(size), current_(size) {}
 
 bool NormalizedLifting::add(const std::vector<ulong>& image, ulong p) {
-    const ulong pinv = n_preinvert_limb(p);
-    const ulong scale = n_invmod(image[pivot_], p);
+    const algebra::modular::PrimeField field(p);
+    const ulong scale = field.inverse(image[pivot_]);
     for (std::size_t j = 0; j < numbers_.size(); ++j) {
-        numbers_[j].residues.push_back(n_mulmod2_preinv(image[j], scale, p, pinv));
+        numbers_[j].residues.push_back(field.multiply(image[j], scale));
     }
     lift_.add_prime(p);
     if (!lift_.attempt_due()) {
