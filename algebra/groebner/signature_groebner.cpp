@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <string>
 
 #include "algebra/error.h"
 #include "algebra/groebner/reduction.h"
@@ -280,6 +281,14 @@ IntegerPolynomial SignatureRun::multiple(const std::uint64_t* m, const IntegerPo
     return p;
 }
 
+std::size_t largest_coefficient_bits(const IntegerPolynomial& h) {
+    std::size_t bits = 0;
+    for (const Integer& c : h.coefficients) {
+        bits = std::max<std::size_t>(bits, fmpz_bits(c.get()));
+    }
+    return bits;
+}
+
 void SignatureRun::add_element(IntegerPolynomial h) {
     const auto n = static_cast<std::uint32_t>(basis_.size());
     const std::uint64_t* lm_h = h.monomial(0, w_);
@@ -417,7 +426,15 @@ GroebnerResult SignatureRun::run(const GroebnerOptions& options, const RingPtr& 
             result.stats.reduction_steps = reduction_.steps;
             return result;
         }
+        const bool grew_early = options.growth_bits != 0 && basis_.size() < options.growth_basis &&
+                                largest_coefficient_bits(h) >= options.growth_bits;
         add_element(std::move(h));
+        if (grew_early) {
+            result.outcome = GroebnerOutcome::stopped_size;
+            result.reason = "coefficients of " + std::to_string(options.growth_bits) +
+                            " bits in a basis of " + std::to_string(basis_.size()) + " elements";
+            break;
+        }
     }
     if (result.outcome != GroebnerOutcome::complete) {
         result = partial(std::move(result), ring);

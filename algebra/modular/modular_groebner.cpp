@@ -501,21 +501,24 @@ double bezout_bound(std::span<const Polynomial> generators) {
 
 }  // namespace
 
-// `auto` decides from the input's shape and a budget of work, never from elapsed time, so that
-// the same input takes the same route on every run and every machine. Measured one thread,
-// this machine (2026-11-26), the signature algorithm against the modular one, with Bézout's
-// bound B (the product of the generators' degrees) and n variables: the signature algorithm
-// wins on eco-7 (1.3 ms against 3.6 ms; B·n = 3402), katsura-9 (0.28 s against 0.38 s; 2304)
-// and ties on cyclic-6 (7.5 ms against 7.1 ms; 4320); it loses on katsura-10 (4.4 s against
-// 2.9 s; 5120) and cyclic-7 (2.1 s against 0.47 s; 35280). So under degree orders B·n > 4500
-// goes to the modular algorithm directly, and below it the signature algorithm runs with a
-// budget of 80 000 reduction steps (katsura-9 needs 60 896), past which the modular one takes
-// over. The rule is a compromise: eco-10 (0.33 s by signatures, 0.62 s modular) and noon-7
-// (0.10 s against 0.36 s) are large by B·n but easy for signatures, and neither a budget of
-// steps alone (cyclic-7 spent 1 s in it) nor the size of a basis modulo p separates them from
-// katsura-10 and cyclic-7. Under lex and elimination orders FGLM wins on zero-dimensional ideals
-// (katsura5_lex 1.6 ms against 11 ms), while the small suite cases finish by signatures in 3 to 149
-// reduction steps: a budget of 300.
+// `auto` decides from the input's shape, a budget of work and the growth of coefficients, never
+// from elapsed time, so that the same input takes the same route on every run and every
+// machine. Measured one thread, this machine, the signature algorithm (over Z) against the
+// modular one, with Bézout's bound B (the product of the generators' degrees) and n variables:
+// below B·n = 4500 the signature algorithm wins or ties (eco-7 1.3 ms against 3.6 ms, katsura-9
+// 0.27 s against 0.38 s, cyclic-6 7 ms against 7 ms) and runs with a budget of 80 000 reduction
+// steps (katsura-9 needs 60 896). Above it what separates the cases is coefficient growth,
+// which the computation over Q pays for and the modular one does not (2026-11-27, the largest
+// coefficient of the basis so far): katsura-10 reaches 128 bits with 32 elements (signatures
+// 4.1 s, modular 2.9 s), cyclic-7 with 277 (1.9 s against 0.44 s), cyclic-8 with 439, while
+// eco-10 ends at 101 bits (0.33 s against 0.62 s), noon-7 at 40 (0.09 s against 0.36 s) and
+// eco-11 reaches 128 bits only with 961 elements (3.6 s against 8.9 s). So above the shape the
+// signature algorithm runs until an element of 128 bits joins a basis of fewer than 512
+// elements, or 2 000 000 reduction steps, and the modular algorithm takes over; the probe costs
+// cyclic-7 0.16 s and cyclic-8 1.7 s. Neither a budget of steps alone (cyclic-7 spent 1 s in
+// it) nor the size of a basis modulo p separated these cases. Under lex and elimination orders
+// FGLM wins on zero-dimensional ideals (katsura5_lex 1.6 ms against 11 ms), while the small
+// suite cases finish by signatures in 3 to 149 reduction steps: a budget of 300.
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options, ModularStats* stats,
                                   bool* used_modular) {
@@ -529,21 +532,29 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     const bool degree_order = ring->order().is_degree_order();
     constexpr double kModularShape = 4500;  // Bézout's bound times the number of variables
     constexpr std::size_t kDegreeOrderBudget = 80000, kOtherOrderBudget = 300;
+    constexpr std::size_t kGrowthBits = 128, kGrowthBasis = 512, kLargeShapeBudget = 2000000;
     GroebnerResult result;
     const double shape = bezout_bound(generators) * static_cast<double>(ring->num_vars());
-    if (!degree_order || shape <= kModularShape) {
-        GroebnerOptions probing = options;
-        probing.max_reduction_steps = degree_order ? kDegreeOrderBudget : kOtherOrderBudget;
-        result = signature_groebner_or_buchberger(generators, probing);
-        const bool over_budget = result.outcome == GroebnerOutcome::stopped_size &&
-                                 result.stats.reduction_steps >= probing.max_reduction_steps;
-        if (!over_budget) {
-            return result;
-        }
-        if (deadline_passed(options.deadline)) {
-            result.outcome = GroebnerOutcome::stopped_timeout;  // the budget was not the limit
-            return result;
-        }
+    GroebnerOptions probing = options;
+    if (!degree_order) {
+        probing.max_reduction_steps = kOtherOrderBudget;
+    } else if (shape <= kModularShape) {
+        probing.max_reduction_steps = kDegreeOrderBudget;
+    } else {
+        probing.max_reduction_steps = kLargeShapeBudget;
+        probing.growth_bits = kGrowthBits;
+        probing.growth_basis = kGrowthBasis;
+    }
+    result = signature_groebner_or_buchberger(generators, probing);
+    // Stopped by the probe's budget or growth rule, not by the caller's own size limit.
+    const bool callers_limit =
+        options.max_basis_size != 0 && result.stats.max_basis_size > options.max_basis_size;
+    if (result.outcome != GroebnerOutcome::stopped_size || callers_limit) {
+        return result;
+    }
+    if (deadline_passed(options.deadline)) {
+        result.outcome = GroebnerOutcome::stopped_timeout;  // the budget was not the limit
+        return result;
     }
     if (used_modular != nullptr) {
         *used_modular = true;

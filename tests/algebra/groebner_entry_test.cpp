@@ -120,10 +120,10 @@ TEST(GroebnerEntry, AlgorithmNamesRoundTrip) {
 namespace locus::algebra {
 namespace {
 
-// `auto` takes its route from the input's shape and a budget of reduction steps, never from
-// the clock: the same route on every run (the wall-clock probe sent katsura-9 either way by
-// the machine's load), and the small lex cases finish by signatures while the larger ones go
-// through the modular algorithm.
+// `auto` takes its route from the input's shape, a budget of reduction steps and the growth of
+// coefficients, never from the clock: the same route on every run (the wall-clock probe sent
+// katsura-9 either way by the machine's load), and the small lex cases finish by signatures
+// while the larger ones go through the modular algorithm.
 TEST(GroebnerEntry, AutomaticRouteIsDecidedByShapeAndWork) {
     const auto route = [](const std::string& name) {
         const IdealFile ideal =
@@ -140,7 +140,22 @@ TEST(GroebnerEntry, AutomaticRouteIsDecidedByShapeAndWork) {
         EXPECT_TRUE(route("katsura5_lex.ideal"));
         EXPECT_FALSE(route("katsura8.ideal"));
     }
-    EXPECT_TRUE(route("cyclic7.ideal"));  // Bézout 5040 times 7 variables: modular directly
+    // Large by Bézout's bound (times the variables, above 4500): the signature algorithm until
+    // coefficients of 128 bits appear in a basis of fewer than 512 elements.
+    EXPECT_TRUE(route("cyclic7.ideal"));    // 128 bits with 277 elements
+    EXPECT_FALSE(route("noon7.ideal"));     // 40 bits at the end
+    EXPECT_FALSE(route("henrion5.ideal"));  // Bézout 120 · 6: below the shape, signatures
+    // The growth rule itself: katsura-10's coefficients pass 128 bits within its first 40
+    // elements, a few hundred reduction steps in.
+    const IdealFile k10 =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura10.ideal"));
+    GroebnerOptions growth;
+    growth.growth_bits = 128;
+    growth.growth_basis = 512;
+    const GroebnerResult grown = signature_groebner(k10.generators, growth);
+    EXPECT_EQ(grown.outcome, GroebnerOutcome::stopped_size);
+    EXPECT_NE(grown.reason.find("128 bits"), std::string::npos) << grown.reason;
+    EXPECT_LT(grown.stats.reduction_steps, 5000u);
     // A budget of steps stops Buchberger and the signature algorithm alike, as stopped_size.
     const IdealFile k =
         parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura7.ideal"));

@@ -70,8 +70,20 @@ awk "$random_awk"' BEGIN { state = 7; print "vars: x,y,z"
         printf "%d*x^%d*y^%d+%d*z^%d-%d*x*y^%d\n", 1 + next_random(99), 1 + next_random(8),
             next_random(9), 1 + next_random(99), 1 + next_random(8), 1 + next_random(999),
             next_random(9) }' >"$tmp/many.ideal"
-within "$(deadline 2)" "auto route on 200 000 generators stops at --timeout 2" 3 "timeout" -- \
-    "$locus" groebner "$tmp/many.ideal" --timeout 2
+# The signature algorithm finds these 200 000 generators' ideal, (x, z), in a fraction of a
+# second (the modular algorithm takes minutes, below); `auto` tries it first since 2026-11-27.
+within "$(deadline 10)" "auto route on 200 000 generators answers (x, z) before --timeout 10" 0 "z" -- \
+    "$locus" groebner "$tmp/many.ideal" --timeout 10
+# Eight dense cubics in eight variables (6561 solutions): `auto` leaves the signature
+# algorithm at the first large coefficients and the modular one runs into the deadline.
+awk "$random_awk"' BEGIN { state = 11; print "vars: x1,x2,x3,x4,x5,x6,x7,x8"
+    for (g = 0; g < 8; ++g) { line = ""
+        for (i = 1; i <= 8; ++i) for (j = i; j <= 8; ++j) for (k = j; k <= 8; ++k)
+            line = line sprintf("%s%d*x%d*x%d*x%d", (line == "" ? "" : "+"), 1 + next_random(99), i, j, k)
+        for (i = 1; i <= 8; ++i) line = line sprintf("+%d*x%d", 1 + next_random(99), i)
+        print line "+" (1 + next_random(99)) } }' >"$tmp/dense8.ideal"
+within "$(deadline 2)" "auto route on eight dense cubics stops at --timeout 2" 3 "timeout" -- \
+    "$locus" groebner "$tmp/dense8.ideal" --timeout 2
 head -100001 "$tmp/many.ideal" >"$tmp/many100k.ideal"
 within "$(deadline 1)" "modular on 100 000 generators stops at --timeout 1" 3 "timeout" -- \
     "$locus" groebner "$tmp/many100k.ideal" --algorithm modular --timeout 1
