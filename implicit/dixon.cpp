@@ -17,6 +17,7 @@
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
 #include "algebra/modular/modular_polynomial.h"
+#include "algebra/modular/rational_lift.h"
 #include "implicit/detail/modular_lifting.h"
 
 namespace locus::implicit {
@@ -407,7 +408,8 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
     // Rows and columns of a maximal non-singular submatrix, chosen at a random point modulo
     // the first prime: the whole matrix unless it is singular everywhere.
     std::mt19937_64 rng(20261126);
-    ulong p = n_nextprime(UWORD(1) << 62, 1);
+    algebra::modular::PrimeSequence prime_sequence(algebra::modular::PrimeSequence::Width::wide);
+    ulong p = prime_sequence.next();
     auto reduce = [&](const std::vector<Integer>& full_matrix, const std::vector<slong>& rows,
                       const std::vector<slong>& columns, ulong prime) {
         ModMatrix result(rows.size(), columns.size(), prime);
@@ -503,7 +505,7 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
         primes.clear();
         for (std::size_t i = 0; i < batch; ++i) {
             primes.push_back(p);
-            p = n_nextprime(p, 1);
+            p = prime_sequence.next();
         }
         images.assign(batch, {});
         if (batch == 1) {

@@ -25,6 +25,7 @@
 #include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/modular/modular_polynomial.h"
+#include "algebra/modular/rational_lift.h"
 #include "implicit/detail/modular_lifting.h"
 #include "implicit/implicitize.h"
 
@@ -185,7 +186,8 @@ ImplicitResult implicitize_by_interpolation(
     const long d = map_degree(map);
     const long bound = num_params == 1 ? d : d * d;
     std::mt19937_64 rng(20261123);
-    ulong p = n_nextprime(UWORD(1) << 62, 1);
+    algebra::modular::PrimeSequence primes(algebra::modular::PrimeSequence::Width::wide);
+    ulong p = primes.next();
     // The least degree with a kernel.
     std::vector<std::vector<std::uint32_t>> support;
     ModularKernel first;
@@ -199,7 +201,7 @@ ImplicitResult implicitize_by_interpolation(
         }
         first = kernel_mod(map, support, p, rng);
         while (first.dimension < 0) {
-            p = n_nextprime(p, 1);
+            p = primes.next();
             first = kernel_mod(map, support, p, rng);
         }
         if (first.dimension > 0) {
@@ -223,7 +225,7 @@ ImplicitResult implicitize_by_interpolation(
     for (int prime_count = 0; prime_count < 400 && !done; ++prime_count) {
         if (prime_count > 0) {
             check_deadline();
-            p = n_nextprime(p, 1);
+            p = primes.next();
             k = kernel_mod(map, support, p, rng);
             if (k.dimension != 1 || k.vector[pivot] == 0) {
                 continue;  // unlucky prime

@@ -193,37 +193,6 @@ bool agrees_modulo(const std::vector<Polynomial>& candidate,
     return true;
 }
 
-// Primes below 2³¹ from a random starting point: with a fixed sequence an input could be made
-// (a coefficient equal to the product of the first two primes, found by the review) on which
-// two unlucky primes agree with each other; the majority and the test prime then accept a
-// wrong ideal, which the certification, checking only one inclusion, cannot reject.
-class PrimeSequence {
-  public:
-    explicit PrimeSequence(const std::vector<std::uint32_t>& forced) : forced_(forced) {
-        std::random_device entropy;
-        last_ = (1u << 31) - (entropy() % (1u << 28));
-    }
-    // Never the same prime twice: a repeated prime would agree with itself.
-    std::uint32_t next() {
-        while (position_ < forced_.size()) {
-            const std::uint32_t p = forced_[position_++];
-            if (std::find(forced_.begin(), forced_.begin() + position_ - 1, p) ==
-                forced_.begin() + position_ - 1) {
-                return p;
-            }
-        }
-        do {
-            last_ = modular::previous_prime(last_);
-        } while (std::find(forced_.begin(), forced_.end(), last_) != forced_.end());
-        return last_;
-    }
-
-  private:
-    const std::vector<std::uint32_t>& forced_;
-    std::size_t position_ = 0;
-    std::uint32_t last_ = 1u << 31;
-};
-
 // The basis when the run stops without an answer: the generators themselves, which generate
 // the ideal (the outcome says the basis is not a Gröbner basis).
 GroebnerResult stopped_with_generators(std::span<const Polynomial> generators,
@@ -271,7 +240,9 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     }
 
     std::vector<Group> groups;
-    PrimeSequence primes(options.primes);
+    modular::PrimeSequence primes(
+        modular::PrimeSequence::Width::small,
+        std::vector<std::uint64_t>(options.primes.begin(), options.primes.end()));
     bool tracing = options.trace;
     std::optional<modular::F4Trace> trace;  // of the first prime F4 ran on
     // Primes whose inputs are reduced and, once a trace exists, whose replays are done: the
@@ -290,7 +261,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     // the inputs modulo it; the others are counted as unlucky.
     auto next_usable = [&]() -> std::optional<Prepared> {
         while (s.primes_used.size() + ready.size() < options.max_primes) {
-            const std::uint32_t p = primes.next();
+            const auto p = static_cast<std::uint32_t>(primes.next());
             const PrimeField field{p};
             Prepared item{p, {}, {}, false, std::nullopt};
             bool usable = true;

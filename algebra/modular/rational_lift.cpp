@@ -4,8 +4,42 @@
 
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
+#include <flint/ulong_extras.h>
+
+#include <algorithm>
+#include <random>
+#include <utility>
 
 namespace locus::algebra::modular {
+
+PrimeSequence::PrimeSequence(Width width, std::vector<std::uint64_t> forced)
+    : width_(width), forced_(std::move(forced)) {
+    std::random_device entropy;
+    const std::uint64_t random = (static_cast<std::uint64_t>(entropy()) << 32) | entropy();
+    last_ = width == Width::small ? (UWORD(1) << 31) - random % (UWORD(1) << 28)
+                                  : (UWORD(1) << 62) + random % (UWORD(1) << 58);
+}
+
+std::uint64_t PrimeSequence::next() {
+    const auto forced_before = [&](std::size_t end, std::uint64_t p) {
+        return std::find(forced_.begin(), forced_.begin() + static_cast<std::ptrdiff_t>(end), p) !=
+               forced_.begin() + static_cast<std::ptrdiff_t>(end);
+    };
+    while (position_ < forced_.size()) {
+        const std::uint64_t p = forced_[position_++];
+        if (!forced_before(position_ - 1, p)) {
+            return p;
+        }
+    }
+    do {
+        if (width_ == Width::small) {
+            last_ = previous_prime(static_cast<std::uint32_t>(last_));
+        } else {
+            last_ = n_nextprime(last_, 1);
+        }
+    } while (forced_before(forced_.size(), last_));
+    return last_;
+}
 
 void RationalLift::add_prime(mp_limb_t p) {
     fmpz_mul_ui(modulus_.get(), modulus_.get(), p);

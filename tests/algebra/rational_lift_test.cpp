@@ -9,6 +9,7 @@
 #include <flint/fmpz.h>
 #include <flint/ulong_extras.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -134,6 +135,30 @@ TEST(RationalLift, AttemptsAfterEveryPrimeThenSpacedOut) {
     }
     EXPECT_EQ(attempts[64], 66u);
     EXPECT_LT(attempts.size(), 120u);
+}
+
+TEST(PrimeSequence, DistinctPrimesOfEitherWidthForcedOnesFirst) {
+    for (const auto width : {PrimeSequence::Width::small, PrimeSequence::Width::wide}) {
+        PrimeSequence primes(width, {65521, 65521, 2147483647});
+        std::vector<std::uint64_t> seen = {primes.next(), primes.next()};
+        EXPECT_EQ(seen[0], 65521u);
+        EXPECT_EQ(seen[1], 2147483647u);  // the repeated forced prime is skipped
+        for (int k = 0; k < 300; ++k) {
+            const std::uint64_t p = primes.next();
+            EXPECT_TRUE(n_is_prime(p)) << p;
+            if (width == PrimeSequence::Width::small) {
+                EXPECT_LT(p, UWORD(1) << 31);
+                EXPECT_GT(p, (UWORD(1) << 31) - (UWORD(1) << 29));
+            } else {
+                EXPECT_GT(p, UWORD(1) << 62);
+                EXPECT_LT(p, (UWORD(1) << 62) + (UWORD(1) << 59));
+            }
+            EXPECT_EQ(std::find(seen.begin(), seen.end(), p), seen.end()) << p;
+            seen.push_back(p);
+        }
+        // From a random point: two sequences start apart (equal with probability about 1e-7).
+        EXPECT_NE(PrimeSequence(width).next(), PrimeSequence(width).next());
+    }
 }
 
 }  // namespace
