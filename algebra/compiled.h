@@ -121,9 +121,12 @@ class CompiledPolynomial {
     std::vector<double> low_words_;
     double double_double_coefficient_error_ = 0.0;
     int double_double_depth_ = 0;
-    // enclose_on_line's bound in doubles: radius = per_scale·Σ|terms| + floor.
+    // enclose_on_line's bound in doubles: radius = per_scale·Σ|terms| + the underflow floor,
+    // multiplier·2^-1060·max(1, |x|, |y|, |z|)^degree at the point (given the largest of
+    // |x|^degree, …), added by with_underflow.
+    double with_underflow(double radius, double largest_power) const;
     double double_error_per_scale_ = 0.0;
-    double double_error_floor_ = 0.0;
+    double underflow_multiplier_ = 0.0;
     double coefficient_error_ = 0.0;
     int degree_ = 0;
     bool made_square_free_ = false;

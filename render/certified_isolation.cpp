@@ -215,14 +215,18 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     split_at(g, a, before, after);
     ++work;
     if (most_sign_changes(before) != 0) {
-        double base = 0.0;
+        double base = 0.0, scale = a;
         if (start > 0.0) {
+            // [a·c, a] with a·c ≤ start: the cut rounded down so that no root after `start` is
+            // skipped. A root this finds in the sliver before `start` (within a few roundings of
+            // it) is before the interval, which the caller checks (first_hit_from).
+            const double cut = start / a * (1.0 - 8.0 * 0x1.0p-53);
             BernsteinBall skipped;
-            split_at(before, start / a, skipped, before);
+            split_at(before, cut, skipped, before);
             ++work;
-            base = start;  // within 2u of the cut's exact σ, a·(start/a)
+            base = a * cut;
+            scale = a - base;
         }
-        const double scale = a - base;
         isolate_into(before, depth_within(scale), 1.0, out);
         if (out.kind != Isolation::Kind::no_root) {
             map_back(base, scale);

@@ -319,7 +319,7 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
         alone.work += isolation.work;
         return alone;
     }
-    // t = t0 + σ·width, exact up to the rounding of the map and of the piece's ends (within 6u
+    // t = t0 + σ·width, exact up to the rounding of the map and of the piece's ends (within 8u
     // of exact).
     const double margin = 16.0 * kUnit * (std::abs(t0) + std::abs(width)) + kTiny;
     const auto t_at = [&](double sigma) { return t0 + sigma * width; };
@@ -327,11 +327,17 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
                       margin};
     RootResult result = narrow(ray, found, tolerance, isolation.work);
     // The piece may reach past the interval: its one root is then the first in the interval
-    // only if it comes before the end.
-    if (result.status == RootStatus::hit && result.t > interval.hi) {
-        RootResult none = miss(result.work);
-        none.decided_by = result.decided_by;
-        return none;
+    // only if it comes before the end. A hit placed outside the interval but within the
+    // tolerance of an end may be a root just inside it (or, at the start, one the cut's
+    // rounding let in from just before): exact arithmetic decides those.
+    if (result.status == RootStatus::hit && (result.t > interval.hi || result.t < interval.lo)) {
+        const double slack = 1.01 * tolerance * std::max(1.0, std::abs(result.t));
+        if (result.t > interval.hi && result.t - slack > interval.hi) {
+            RootResult none = miss(result.work);
+            none.decided_by = result.decided_by;
+            return none;
+        }
+        return exact(ray, interval, result.work);
     }
     if (result.status == RootStatus::hit) {
         next.t = result.t;

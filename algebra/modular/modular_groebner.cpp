@@ -516,10 +516,17 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         probing.growth_bits = kGrowthBits;
         probing.growth_basis = kGrowthBasis;
     }
+    // A caller's own budget of steps stays the limit when it is the smaller.
+    if (options.max_reduction_steps != 0) {
+        probing.max_reduction_steps =
+            std::min(probing.max_reduction_steps, options.max_reduction_steps);
+    }
     result = signature_groebner_or_buchberger(generators, probing);
-    // Stopped by the probe's budget or growth rule, not by the caller's own size limit.
+    // Stopped by the probe's budget or growth rule, not by the caller's own limits.
     const bool callers_limit =
-        options.max_basis_size != 0 && result.stats.max_basis_size > options.max_basis_size;
+        (options.max_basis_size != 0 && result.stats.max_basis_size > options.max_basis_size) ||
+        (options.max_reduction_steps != 0 &&
+         result.stats.reduction_steps >= options.max_reduction_steps);
     if (result.outcome != GroebnerOutcome::stopped_size || callers_limit) {
         return result;
     }

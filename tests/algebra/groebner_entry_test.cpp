@@ -156,6 +156,14 @@ TEST(GroebnerEntry, AutomaticRouteIsDecidedByShapeAndWork) {
     EXPECT_EQ(grown.outcome, GroebnerOutcome::stopped_size);
     EXPECT_NE(grown.reason.find("128 bits"), std::string::npos) << grown.reason;
     EXPECT_LT(grown.stats.reduction_steps, 5000u);
+    // A caller's own budget of steps is the caller's: `auto` stops there rather than handing
+    // the ideal to the modular algorithm.
+    GroebnerOptions callers;
+    callers.max_reduction_steps = 100;
+    bool modular = true;
+    const GroebnerResult limited = groebner_automatic(k10.generators, callers, nullptr, &modular);
+    EXPECT_EQ(limited.outcome, GroebnerOutcome::stopped_size);
+    EXPECT_FALSE(modular);
     // A budget of steps stops Buchberger and the signature algorithm alike, as stopped_size.
     const IdealFile k =
         parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura7.ideal"));

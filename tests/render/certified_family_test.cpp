@@ -113,6 +113,15 @@ TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
                 check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
                                             &random_hint),
                       "a random hint");
+                // Windows hard against either end of the interval.
+                NeighbourHint near_start{interval.lo + 2e-6 * span, 1e-6 * span};
+                check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
+                                            &near_start),
+                      "a window at the interval's start");
+                NeighbourHint near_end{interval.hi - 2e-6 * span, 1e-6 * span};
+                check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
+                                            &near_end),
+                      "a window at the interval's end");
                 if (plain.status == RootStatus::hit) {
                     NeighbourHint tight{plain.t, 1e-12 * span};
                     check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
@@ -142,7 +151,7 @@ TEST(BernsteinSplit, MayWriteOverItsInput) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
         BernsteinBall whole;
-        whole.degree = 1 + trial % 12;
+        whole.degree = trial % 24;  // the unrolled kernels (1–12) and the generic one
         for (int i = 0; i <= whole.degree; ++i) {
             whole.b[i] = unit(random) * std::pow(10.0, 3.0 * unit(random));
             whole.r[i] = std::abs(whole.b[i]) * 1e-12 * (1.0 + unit(random));
