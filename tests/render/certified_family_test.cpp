@@ -8,6 +8,8 @@
 // random eyes.
 #include <gtest/gtest.h>
 
+#include <flint/fmpq.h>
+
 #include <cmath>
 #include <memory>
 #include <random>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "algebra/compiled.h"
+#include "algebra/rational.h"
 #include "bench/surface_suite.h"
 #include "render/bernstein_ball.h"
 #include "render/certified_isolation.h"
@@ -169,6 +172,73 @@ TEST(BernsteinSplit, MayWriteOverItsInput) {
             EXPECT_EQ(over_right.b[i], right.b[i]);
             EXPECT_EQ(over_right.r[i], right.r[i]);
         }
+    }
+}
+
+// The radii of de Casteljau's scheme against the scheme in exact rationals (FLINT), shares no
+// code with it: every computed coefficient of both pieces, and every value, within its radius
+// of the exact one — at degrees up to 40, cuts on both sides of 1/2, coefficients of mixed
+// magnitudes.
+TEST(BernsteinSplit, RadiiHoldAgainstExactArithmetic) {
+    std::mt19937_64 random(17);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    // The exact value of a finite double.
+    const auto exact = [](double v, algebra::Rational& out) {
+        int exponent = 0;
+        const double mantissa = std::frexp(v, &exponent);
+        fmpz_set_d(fmpq_numref(out.get()), std::ldexp(mantissa, 53));
+        fmpz_one(fmpq_denref(out.get()));
+        if (exponent >= 53) {
+            fmpq_mul_2exp(out.get(), out.get(), static_cast<ulong>(exponent - 53));
+        } else {
+            fmpq_div_2exp(out.get(), out.get(), static_cast<ulong>(53 - exponent));
+        }
+    };
+    const auto within = [&](const algebra::Rational& truth, double value, double radius) {
+        algebra::Rational difference, bound;
+        exact(value, difference);
+        fmpq_sub(difference.get(), difference.get(), truth.get());
+        fmpq_abs(difference.get(), difference.get());
+        exact(radius, bound);
+        return fmpq_cmp(difference.get(), bound.get()) <= 0;
+    };
+    for (int trial = 0; trial < 120; ++trial) {
+        BernsteinBall whole;
+        whole.degree = trial % 41;
+        const int n = whole.degree;
+        for (int i = 0; i <= n; ++i) {
+            whole.b[i] = unit(random) * std::pow(10.0, 6.0 * unit(random));
+            whole.r[i] = 0.0;
+        }
+        const double tau = trial % 4 == 0 ? 0.5 : fraction(random) * 0.98 + 0.01;
+        BernsteinBall left, right;
+        split_at(whole, tau, left, right);
+        // Exact de Casteljau with the double τ read exactly.
+        std::vector<algebra::Rational> row(static_cast<std::size_t>(n + 1));
+        algebra::Rational t, keep(1), a, b;
+        exact(tau, t);
+        fmpq_sub(keep.get(), keep.get(), t.get());
+        for (int i = 0; i <= n; ++i) {
+            exact(whole.b[i], row[static_cast<std::size_t>(i)]);
+        }
+        EXPECT_TRUE(within(row[0], left.b[0], left.r[0]));
+        EXPECT_TRUE(within(row[static_cast<std::size_t>(n)], right.b[n], right.r[n]));
+        for (int level = 1; level <= n; ++level) {
+            for (int i = 0; i <= n - level; ++i) {
+                const auto k = static_cast<std::size_t>(i);
+                fmpq_mul(a.get(), keep.get(), row[k].get());
+                fmpq_mul(b.get(), t.get(), row[k + 1].get());
+                fmpq_add(row[k].get(), a.get(), b.get());
+            }
+            EXPECT_TRUE(within(row[0], left.b[level], left.r[level]))
+                << "degree " << n << ", τ " << tau << ", left " << level;
+            EXPECT_TRUE(within(row[static_cast<std::size_t>(n - level)], right.b[n - level],
+                               right.r[n - level]))
+                << "degree " << n << ", τ " << tau << ", right " << n - level;
+        }
+        // The value at τ is the shared vertex: evaluate() must enclose it too.
+        const BallValue value = evaluate(whole, tau);
+        EXPECT_TRUE(within(row[0], value.value, value.radius)) << "degree " << n;
     }
 }
 
