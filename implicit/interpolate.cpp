@@ -18,9 +18,11 @@
 #include <flint/nmod_mat.h>
 #include <flint/ulong_extras.h>
 
+#include <array>
 #include <chrono>
 #include <optional>
 #include <random>
+#include <span>
 
 #include "algebra/deadline.h"
 #include "algebra/error.h"
@@ -46,14 +48,16 @@ using algebra::modular::WideModularPolynomial;
 // f at a point modulo p (the point's coordinates in the order of f's variables).
 ulong evaluate(const WideModularPolynomial& f, const algebra::PolyRing& ring,
                const std::vector<ulong>& point, const PrimeField& field) {
-    std::vector<std::uint32_t> exponents(ring.num_vars());
+    // One or two parameters (implicitize_by_interpolation checks): no allocation per point.
+    std::array<std::uint32_t, 2> exponents{};
+    const std::span<std::uint32_t> used(exponents.data(), ring.num_vars());
     ulong sum = 0;
     for (std::size_t i = 0; i < f.size(); ++i) {
-        ring.layout().unpack(f.monomial(i, ring.words()), exponents);
+        ring.layout().unpack(f.monomial(i, ring.words()), used);
         ulong term = f.coefficients[i];
-        for (std::size_t k = 0; k < point.size(); ++k) {
-            if (exponents[k] != 0) {
-                term = field.multiply(term, field.power(point[k], exponents[k]));
+        for (std::size_t k = 0; k < used.size(); ++k) {
+            if (used[k] != 0) {
+                term = field.multiply(term, field.power(point[k], used[k]));
             }
         }
         sum = field.add(sum, term);

@@ -304,8 +304,4 @@ ValueSlope MidpointPolynomial::at(double sigma) const {
     return out;
 }
 
-ValueSlope estimate(const BernsteinBall& g, double sigma) {
-    return MidpointPolynomial(g).at(sigma);
-}
-
 }  // namespace locus::render

@@ -57,14 +57,12 @@ struct BallValue {
 BallValue evaluate(const BernsteinBall& g, double sigma);
 
 // The value and derivative of the midpoint polynomial (radii ignored) at σ, in O(n): for the
-// Newton steps that only propose points, which evaluate() then certifies.
+// Newton steps that only propose points, which evaluate() then certifies. The binomial weights
+// are applied once per ball, for the many σ a search asks about.
 struct ValueSlope {
     double value = 0.0;
     double slope = 0.0;
 };
-ValueSlope estimate(const BernsteinBall& g, double sigma);
-
-// The same for many σ on one ball: the binomial weights are applied once.
 class MidpointPolynomial {
   public:
     explicit MidpointPolynomial(const BernsteinBall& g);

@@ -1,7 +1,5 @@
 #include "algebra/modular/rational_lift.h"
 
-#include "algebra/modular/modular_polynomial.h"
-
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
 #include <flint/ulong_extras.h>
@@ -44,6 +42,7 @@ std::uint64_t PrimeSequence::next() {
 void RationalLift::add_prime(mp_limb_t p) {
     fmpz_mul_ui(modulus_.get(), modulus_.get(), p);
     primes_.push_back(p);
+    fields_.emplace_back(p);
 }
 
 bool RationalLift::attempt_due() {
@@ -68,9 +67,9 @@ RationalLift::Attempt::~Attempt() {
 namespace {
 
 // Whether the value n/d agrees with the residues from value_primes on: n ≡ d·r (mod p), p ∤ d.
-bool value_agrees(LiftedNumber& number, const std::vector<mp_limb_t>& primes) {
-    for (std::size_t i = number.value_primes; i < primes.size(); ++i) {
-        const PrimeField field(primes[i]);
+bool value_agrees(LiftedNumber& number, const std::vector<PrimeField>& fields) {
+    for (std::size_t i = number.value_primes; i < fields.size(); ++i) {
+        const PrimeField& field = fields[i];
         const ulong n = fmpz_fdiv_ui(fmpq_numref(number.value.get()), field.p);
         const ulong d = fmpz_fdiv_ui(fmpq_denref(number.value.get()), field.p);
         if (d == 0 || n != field.multiply(d, number.residues[i])) {
@@ -78,15 +77,14 @@ bool value_agrees(LiftedNumber& number, const std::vector<mp_limb_t>& primes) {
             return false;
         }
     }
-    number.value_primes = primes.size();
+    number.value_primes = fields.size();
     return true;
 }
 
 }  // namespace
 
 bool RationalLift::Attempt::reconstruct(LiftedNumber& number) {
-    const std::vector<mp_limb_t>& primes = lift_.primes_;
-    if (number.value_primes > 0 && value_agrees(number, primes)) {
+    if (number.value_primes > 0 && value_agrees(number, lift_.fields_)) {
         return true;
     }
     fmpz_multi_CRT_ui(residue_.get(), number.residues.data(), comb_, temp_, 0);  // in [0, M)
@@ -96,7 +94,7 @@ bool RationalLift::Attempt::reconstruct(LiftedNumber& number) {
                0) {
         return false;
     }
-    number.value_primes = number.found_with = primes.size();
+    number.value_primes = number.found_with = lift_.primes_.size();
     return true;
 }
 

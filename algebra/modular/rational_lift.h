@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "algebra/modular/modular_polynomial.h"
 #include "algebra/rational.h"
 
 namespace locus::algebra::modular {
@@ -93,6 +94,7 @@ class RationalLift {
 
   private:
     std::vector<mp_limb_t> primes_;
+    std::vector<PrimeField> fields_;  // one per prime: the checks of found values use them
     Integer modulus_{1};
     std::size_t next_attempt_ = 0;
 };
