@@ -92,16 +92,16 @@ void F4Engine::step() {
 
     const auto algebra_start = Clock::now();
     const std::size_t width = columns.size();
-    std::vector<SparseRow> pivots;
-    pivots.reserve(reducers.size());
-    std::vector<std::int64_t> pivot_of_column(width, -1);
+    const std::size_t total_rows = reducers.size() + rows.size();
+    std::vector<std::vector<std::uint32_t>> reducer_columns(reducers.size());
+    Pivots pivots(width);
+    pivots.rows.reserve(total_rows);
     std::size_t entries = 0;
     for (std::size_t r = 0; r < reducers.size(); ++r) {
-        pivots.push_back(to_sparse(reducers[r], column_of));
-        pivot_of_column[pivots.back().columns.front()] = static_cast<std::int64_t>(r);
-        entries += pivots.back().columns.size();
+        reducer_columns[r] = columns_of(reducers[r], column_of);
+        pivots.add(row_view(reducers[r], reducer_columns[r]));
+        entries += reducer_columns[r].size();
     }
-    const std::size_t total_rows = reducers.size() + rows.size();
     if (total_rows > stats_.largest_rows) {
         stats_.largest_rows = total_rows;
         stats_.largest_columns = width;
@@ -111,20 +111,26 @@ void F4Engine::step() {
         stats_.largest_density =
             static_cast<double>(entries) / (static_cast<double>(total_rows) * width);
     }
-    // Reduce the S-halves by the reducers, then echelonize what is left among itself.
+    // Reduce the S-halves by the reducers, then echelonize what is left among itself. A
+    // reduced row's storage stays where it is when `fresh` grows (a moved vector keeps its
+    // buffer), so its pivot view stays valid.
     std::vector<std::uint64_t> acc(width, 0);
     std::vector<SparseRow> fresh;
+    fresh.reserve(rows.size());
     std::vector<std::size_t> useful;  // rows that gave new elements, in order
+    std::vector<std::uint32_t> row_columns;
     for (std::size_t r = 0; r < rows.size(); ++r) {
         check_deadline();
+        row_columns = columns_of(rows[r], column_of);
         std::optional<SparseRow> reduced =
-            reduce_row(to_sparse(rows[r], column_of), acc, pivot_of_column, pivots);
+            reduce_row(row_view(rows[r], row_columns), acc, pivots, total_rows);
         if (!reduced) {
             ++stats_.zero_rows;
             continue;
         }
         useful.push_back(r);
         fresh.push_back(std::move(*reduced));
+        pivots.add(view_of(fresh.back()));
     }
     stats_.linear_algebra_seconds += seconds_since(algebra_start);
     std::vector<std::uint64_t> column_monomials;
@@ -145,13 +151,15 @@ void F4Engine::step() {
 // and supports are the recorded ones, so the symbolic preprocessing would be too.
 std::vector<ModularPolynomial> F4Engine::reduced_basis() {
     std::vector<std::uint32_t> minimal;
-    std::vector<SparseRow> pivots;
+    std::vector<PivotRow> rows;  // the matrix's pivots: the minimal elements first
+    std::vector<std::vector<std::uint32_t>> reducer_columns;
     std::vector<std::uint64_t> column_monomials;
     if (replaying_ != nullptr && !replaying_->final_elements.empty()) {
         const F4Trace::Step& final_step = replaying_->final_step;
         minimal = replaying_->final_elements;
         for (const F4Trace::Row& r : final_step.reducers) {
-            pivots.push_back(SparseRow{r.columns, basis_[r.element].poly.coefficients});
+            rows.push_back(
+                {r.columns.data(), basis_[r.element].poly.coefficients.data(), r.columns.size()});
         }
         column_monomials = final_step.column_monomials;
     } else {
@@ -174,7 +182,7 @@ std::vector<ModularPolynomial> F4Engine::reduced_basis() {
         for (std::size_t g : minimal) {
             basis_[g].redundant = false;
         }
-        std::vector<RowSpec> reducers, rows;
+        std::vector<RowSpec> reducers, none;
         std::vector<std::int64_t> pivot_of_monomial(table_.size(), -1);
         std::vector<char> seen(table_.size(), 0);
         std::vector<std::uint64_t> one(words_, 0);
@@ -185,43 +193,44 @@ std::vector<ModularPolynomial> F4Engine::reduced_basis() {
             reducers.push_back(std::move(row));
         }
         seen.resize(table_.size(), 0);
-        preprocess(reducers, rows, pivot_of_monomial, seen);
+        preprocess(reducers, none, pivot_of_monomial, seen);
         std::vector<std::uint32_t> column_of;
         const std::vector<std::uint32_t> columns = order_columns(seen, column_of);
         for (const std::uint32_t m : columns) {
             column_monomials.insert(column_monomials.end(), table_.at(m), table_.at(m) + words_);
         }
+        reducer_columns.reserve(reducers.size());
         for (const RowSpec& reducer : reducers) {
-            pivots.push_back(to_sparse(reducer, column_of));
+            reducer_columns.push_back(columns_of(reducer, column_of));
+            rows.push_back(row_view(reducer, reducer_columns.back()));
         }
         if (record_ != nullptr) {
             record_->final_elements = minimal;
             record_->final_step = {};
             for (std::size_t r = 0; r < reducers.size(); ++r) {
                 record_->final_step.reducers.push_back(
-                    {static_cast<std::uint32_t>(reducers[r].element), pivots[r].columns});
+                    {static_cast<std::uint32_t>(reducers[r].element), reducer_columns[r]});
             }
             record_->final_step.column_monomials = column_monomials;
         }
     }
-    std::vector<std::int64_t> pivot_of_column(column_monomials.size() / words_, -1);
-    for (std::size_t r = 0; r < pivots.size(); ++r) {
-        pivot_of_column[pivots[r].columns.front()] = static_cast<std::int64_t>(r);
+    Pivots pivots(column_monomials.size() / words_);
+    for (const PivotRow& row : rows) {
+        pivots.add(row);
     }
-    std::vector<std::uint64_t> acc(pivot_of_column.size(), 0);
+    std::vector<std::uint64_t> acc(pivots.of_column.size(), 0);
     std::vector<ModularPolynomial> out;
     for (std::size_t k = 0; k < minimal.size(); ++k) {
         check_deadline();
-        const SparseRow& row = pivots[k];
-        for (std::size_t i = 1; i < row.columns.size(); ++i) {
+        const PivotRow& row = pivots.rows[k];
+        for (std::size_t i = 1; i < row.size; ++i) {
             acc[row.columns[i]] = row.coefficients[i];
         }
-        const SparseRow tail = row.columns.size() > 1
-                                   ? reduce_dense(acc, row.columns[1], pivot_of_column, pivots)
-                                   : SparseRow{};
+        const SparseRow tail =
+            row.size > 1 ? reduce_dense(acc, row.columns[1], pivots, rows.size()) : SparseRow{};
         ModularPolynomial poly;
         poly.coefficients.push_back(1);
-        const std::uint64_t* leading = column_monomials.data() + row.columns.front() * words_;
+        const std::uint64_t* leading = column_monomials.data() + row.columns[0] * words_;
         poly.monomials.assign(leading, leading + words_);
         for (std::size_t i = 0; i < tail.columns.size(); ++i) {
             poly.coefficients.push_back(tail.coefficients[i]);

@@ -96,15 +96,14 @@ std::vector<std::uint32_t> F4Engine::order_columns(const std::vector<char>& seen
     return monomials;
 }
 
-SparseRow F4Engine::to_sparse(const RowSpec& spec,
-                              const std::vector<std::uint32_t>& column_of) const {
-    SparseRow row;
-    row.columns.reserve(spec.monomials.size());
+std::vector<std::uint32_t> F4Engine::columns_of(const RowSpec& spec,
+                                                const std::vector<std::uint32_t>& column_of) const {
+    std::vector<std::uint32_t> columns;
+    columns.reserve(spec.monomials.size());
     for (std::uint32_t m : spec.monomials) {
-        row.columns.push_back(column_of[m]);
+        columns.push_back(column_of[m]);
     }
-    row.coefficients = basis_[spec.element].poly.coefficients;
-    return row;
+    return columns;
 }
 
 }  // namespace locus::algebra::modular::detail

@@ -70,38 +70,40 @@ bool F4Engine::replay_step(const F4Trace::Step& step) {
     check_deadline();
     ++stats_.steps;
     const auto algebra_start = Clock::now();
-    auto row_of = [&](const F4Trace::Row& r) -> std::optional<SparseRow> {
+    auto row_of = [&](const F4Trace::Row& r) -> std::optional<PivotRow> {
         if (r.element >= basis_.size() || !fits_trace_[r.element]) {
             return std::nullopt;
         }
-        return SparseRow{r.columns, basis_[r.element].poly.coefficients};
+        return PivotRow{r.columns.data(), basis_[r.element].poly.coefficients.data(),
+                        r.columns.size()};
     };
     const std::size_t width = step.column_monomials.size() / words_;
-    std::vector<SparseRow> pivots;
-    pivots.reserve(step.reducers.size() + step.rows.size());
-    std::vector<std::int64_t> pivot_of_column(width, -1);
+    const std::size_t total_rows = step.reducers.size() + step.rows.size();
+    Pivots pivots(width);
+    pivots.rows.reserve(total_rows);
     for (const F4Trace::Row& r : step.reducers) {
-        std::optional<SparseRow> row = row_of(r);
+        std::optional<PivotRow> row = row_of(r);
         if (!row) {
             return false;
         }
-        pivot_of_column[row->columns.front()] = static_cast<std::int64_t>(pivots.size());
-        pivots.push_back(std::move(*row));
+        pivots.add(*row);
     }
     std::vector<std::uint64_t> acc(width, 0);
     std::vector<SparseRow> fresh;
+    fresh.reserve(step.rows.size());
     for (std::size_t k = 0; k < step.rows.size(); ++k) {
         check_deadline();
-        std::optional<SparseRow> row = row_of(step.rows[k]);
+        std::optional<PivotRow> row = row_of(step.rows[k]);
         if (!row) {
             return false;
         }
-        std::optional<SparseRow> reduced = reduce_row(*row, acc, pivot_of_column, pivots);
+        std::optional<SparseRow> reduced = reduce_row(*row, acc, pivots, total_rows);
         if (!reduced || reduced->columns.front() != step.leading[k]) {
             stats_.linear_algebra_seconds += seconds_since(algebra_start);
             return false;
         }
         fresh.push_back(std::move(*reduced));
+        pivots.add(view_of(fresh.back()));
     }
     stats_.pairs_reduced += step.rows.size();
     stats_.linear_algebra_seconds += seconds_since(algebra_start);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algebra/error.h"
+#include "algebra/groebner.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/parse.h"
@@ -167,6 +168,42 @@ TEST(PrimeField, TheCheckModuloPRejectsWrongBases) {
     std::vector<Polynomial> changed = basis;
     changed.back() += Polynomial::constant(file.ring, Rational(1));
     EXPECT_FALSE(check_groebner_basis_modulo(changed, file.generators, 32003).ok);
+}
+
+// F4's row reduction sums products unreduced in 64 bits when no sum can overflow (p = 65 521
+// on any matrix; 23-bit primes on matrices below 2¹⁸ rows) and keeps entries below 2p²
+// otherwise (31-bit primes). Katsura-6 and cyclic-6 on both sides of that bound, each basis
+// checked modulo its prime by the division algorithm (no F4 code), reduced, and with the
+// leading monomials of the basis over Q (these primes are lucky for both).
+TEST(PrimeField, RowReductionIsRightWithAndWithoutLazySums) {
+    const char* const ideals[] = {
+        "vars: x0,x1,x2,x3,x4,x5\n"
+        "x0+2*x1+2*x2+2*x3+2*x4+2*x5-1\nx0^2+2*x1^2+2*x2^2+2*x3^2+2*x4^2+2*x5^2-x0\n"
+        "2*x0*x1+2*x1*x2+2*x2*x3+2*x3*x4+2*x4*x5-x1\nx1^2+2*x0*x2+2*x1*x3+2*x2*x4+2*x3*x5-x2\n"
+        "2*x1*x2+2*x0*x3+2*x1*x4+2*x2*x5-x3\nx2^2+2*x1*x3+2*x0*x4+2*x1*x5-x4\n",
+        "vars: a,b,c,d,e,f\na+b+c+d+e+f\na*b+b*c+c*d+d*e+e*f+f*a\n"
+        "a*b*c+b*c*d+c*d*e+d*e*f+e*f*a+f*a*b\na*b*c*d+b*c*d*e+c*d*e*f+d*e*f*a+e*f*a*b+f*a*b*c\n"
+        "a*b*c*d*e+b*c*d*e*f+c*d*e*f*a+d*e*f*a*b+e*f*a*b*c+f*a*b*c*d\na*b*c*d*e*f-1\n"};
+    for (const char* text : ideals) {
+        const IdealFile file = parse_ideal_file(text);
+        const GroebnerAnswer over_q = groebner(file.generators, GroebnerRequest{});
+        ASSERT_EQ(over_q.outcome, GroebnerOutcome::complete);
+        auto leading_exponents = [](const std::vector<Polynomial>& basis) {
+            std::vector<std::vector<std::uint32_t>> out;
+            for (const Polynomial& g : basis) {
+                out.push_back(g.exponents(0));
+            }
+            std::sort(out.begin(), out.end());
+            return out;
+        };
+        for (const std::uint32_t p : {65521u, 8388593u, 2147483647u}) {
+            const std::vector<Polynomial> basis = groebner_modulo(file.generators, p);
+            const BasisCheck check = check_groebner_basis_modulo(basis, file.generators, p);
+            EXPECT_TRUE(check.ok) << "p = " << p << ": " << check.failure;
+            EXPECT_TRUE(is_reduced(basis)) << "p = " << p;
+            EXPECT_EQ(leading_exponents(basis), leading_exponents(over_q.basis)) << "p = " << p;
+        }
+    }
 }
 
 }  // namespace

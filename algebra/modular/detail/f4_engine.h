@@ -55,6 +55,30 @@ struct SparseRow {
     std::vector<std::uint32_t> coefficients;
 };
 
+// A pivot of the linear algebra, monic: a view of columns and coefficients held elsewhere. A
+// reducer row is a multiple of a basis element, so its coefficients are the element's own,
+// shared by every multiple of it in the matrix (as in msolve) instead of copied per row.
+struct PivotRow {
+    const std::uint32_t* columns;
+    const std::uint32_t* coefficients;
+    std::size_t size;
+};
+
+inline PivotRow view_of(const SparseRow& row) {
+    return {row.columns.data(), row.coefficients.data(), row.columns.size()};
+}
+
+// The pivots of one matrix, indexed by column.
+struct Pivots {
+    explicit Pivots(std::size_t width) : of_column(width, -1) {}
+    void add(PivotRow row) {
+        of_column[row.columns[0]] = static_cast<std::int64_t>(rows.size());
+        rows.push_back(row);
+    }
+    std::vector<PivotRow> rows;
+    std::vector<std::int64_t> of_column;  // row index, or −1
+};
+
 class F4Engine {
   public:
     F4Engine(const MonomialLayout& layout, const PrimeField& field, const F4Options& options,
@@ -125,19 +149,23 @@ class F4Engine {
     // Columns: the seen monomials, descending under the order.
     std::vector<std::uint32_t> order_columns(const std::vector<char>& seen,
                                              std::vector<std::uint32_t>& column_of) const;
-    SparseRow to_sparse(const RowSpec& spec, const std::vector<std::uint32_t>& column_of) const;
+    // The columns of a row; its coefficients are its element's.
+    std::vector<std::uint32_t> columns_of(const RowSpec& spec,
+                                          const std::vector<std::uint32_t>& column_of) const;
+    PivotRow row_view(const RowSpec& spec, const std::vector<std::uint32_t>& columns) const {
+        return {columns.data(), basis_[spec.element].poly.coefficients.data(), columns.size()};
+    }
 
     // Linear algebra (f4_linear_algebra.cpp).
-    // Reduces `acc` (dense, entries < 2p²) from column `from` on by the pivot rows; returns the
-    // reduced row (entries in [1, p)) of the columns without a pivot.
-    SparseRow reduce_dense(std::vector<std::uint64_t>& acc, std::size_t from,
-                           const std::vector<std::int64_t>& pivot_of_column,
-                           const std::vector<SparseRow>& pivots) const;
-    // Reduces `row` by the pivots (using the zeroed dense accumulator `acc`); a non-zero result
-    // is made monic and becomes the pivot of its leading column. Nothing when it reduces to 0.
-    std::optional<SparseRow> reduce_row(const SparseRow& row, std::vector<std::uint64_t>& acc,
-                                        std::vector<std::int64_t>& pivot_of_column,
-                                        std::vector<SparseRow>& pivots) const;
+    // Reduces `acc` (dense) from column `from` on by the pivots; returns the reduced row
+    // (entries in [1, p)) of the columns without a pivot, and leaves `acc` zero. `rows` bounds
+    // the number of rows of the matrix (see lazy_reduction).
+    SparseRow reduce_dense(std::vector<std::uint64_t>& acc, std::size_t from, const Pivots& pivots,
+                           std::size_t rows) const;
+    // Reduces `row` (a view; using the zeroed dense accumulator `acc`) by the pivots; a
+    // non-zero result is made monic. Nothing when it reduces to 0.
+    std::optional<SparseRow> reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
+                                        const Pivots& pivots, std::size_t rows) const;
     // The reduced rows as polynomials, smallest leading monomial first (the order in which
     // they join the basis, which a replay repeats).
     std::vector<ModularPolynomial> new_elements(
