@@ -5,14 +5,13 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace locus::algebra {
 
 class MonomialTable {
   public:
-    explicit MonomialTable(std::size_t words) : words_(words), slots_(1024, kEmpty) {}
+    explicit MonomialTable(std::size_t words) : words_(words), slots_(1024, Slot{kEmpty, 0}) {}
 
     std::size_t size() const { return count_; }
     const std::uint64_t* at(std::uint32_t index) const { return data_.data() + index * words_; }
@@ -22,21 +21,38 @@ class MonomialTable {
         if (2 * (count_ + 1) > slots_.size()) {
             grow();
         }
-        std::size_t slot = hash(m) & (slots_.size() - 1);
-        while (slots_[slot] != kEmpty) {
-            if (std::memcmp(at(slots_[slot]), m, words_ * sizeof(std::uint64_t)) == 0) {
-                return slots_[slot];
+        const std::uint64_t h = hash(m);
+        const auto tag = static_cast<std::uint32_t>(h >> 32);
+        std::size_t slot = h & (slots_.size() - 1);
+        // A slot keeps its monomial's hash tag beside its index: most probes that meet another
+        // monomial are settled by the tag, without reading the monomial's words.
+        while (slots_[slot].index != kEmpty) {
+            if (slots_[slot].tag == tag && equal(at(slots_[slot].index), m)) {
+                return slots_[slot].index;
             }
             slot = (slot + 1) & (slots_.size() - 1);
         }
         const auto index = static_cast<std::uint32_t>(count_++);
         data_.insert(data_.end(), m, m + words_);
-        slots_[slot] = index;
+        slots_[slot] = {index, tag};
         return index;
     }
 
   private:
     static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
+    struct Slot {
+        std::uint32_t index;
+        std::uint32_t tag;  // the high half of the monomial's hash
+    };
+    // Monomials are a few words: a loop the compiler inlines beats a call to memcmp.
+    bool equal(const std::uint64_t* a, const std::uint64_t* b) const {
+        for (std::size_t w = 0; w < words_; ++w) {
+            if (a[w] != b[w]) {
+                return false;
+            }
+        }
+        return true;
+    }
     std::uint64_t hash(const std::uint64_t* m) const {
         std::uint64_t h = 0x9e3779b97f4a7c15ULL;
         for (std::size_t w = 0; w < words_; ++w) {
@@ -46,20 +62,23 @@ class MonomialTable {
         return h;
     }
     void grow() {
-        std::vector<std::uint32_t> old(2 * slots_.size(), kEmpty);
+        std::vector<Slot> old(2 * slots_.size(), Slot{kEmpty, 0});
         old.swap(slots_);
-        for (std::uint32_t index = 0; index < count_; ++index) {
-            std::size_t slot = hash(at(index)) & (slots_.size() - 1);
-            while (slots_[slot] != kEmpty) {
+        for (const Slot& entry : old) {
+            if (entry.index == kEmpty) {
+                continue;
+            }
+            std::size_t slot = hash(at(entry.index)) & (slots_.size() - 1);
+            while (slots_[slot].index != kEmpty) {
                 slot = (slot + 1) & (slots_.size() - 1);
             }
-            slots_[slot] = index;
+            slots_[slot] = entry;
         }
     }
 
     std::size_t words_;
     std::vector<std::uint64_t> data_;
-    std::vector<std::uint32_t> slots_;
+    std::vector<Slot> slots_;
     std::size_t count_ = 0;
 };
 

@@ -28,14 +28,17 @@ void add_multiple(std::uint64_t* acc, const PivotRow& row, std::uint64_t factor,
             target = sum >= limit ? sum - limit : sum;
         }
     };
+    // In locals: a store to acc could otherwise alias the row's size (both 64-bit) and reload
+    // it every iteration.
+    const std::size_t size = row.size;
     std::size_t k = 1;
-    for (; k + 4 <= row.size; k += 4) {
+    for (; k + 4 <= size; k += 4) {
         update(k);
         update(k + 1);
         update(k + 2);
         update(k + 3);
     }
-    for (; k < row.size; ++k) {
+    for (; k < size; ++k) {
         update(k);
     }
 }
