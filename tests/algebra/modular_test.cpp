@@ -351,16 +351,32 @@ TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
     EXPECT_TRUE(batch[0].has_value());
     EXPECT_FALSE(batch[1].has_value());
     EXPECT_TRUE(batch[2].has_value());
-    // The multi-modular driver then runs F4 afresh on that prime, and the vote and the lift
-    // still give the rational basis.
+    // The multi-modular driver then sets that prime aside, and the lift still gives the
+    // rational basis.
     ModularOptions options;
     options.primes = {other, p};
     ModularStats stats;
     const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
-    EXPECT_EQ(normalized(r.basis, *ideal.ring),
-              normalized(buchberger(ideal.generators).basis, *ideal.ring));
-    EXPECT_GE(stats.replays_refused, 1u);
+    const std::string expected = normalized(buchberger(ideal.generators).basis, *ideal.ring);
+    EXPECT_EQ(normalized(r.basis, *ideal.ring), expected);
+    EXPECT_EQ(stats.replays_refused, 1u);
+    EXPECT_EQ(stats.replays_refused_set_aside, 1u);
     EXPECT_TRUE(stats.certified);
+    // Recorded on the unlucky prime, the trace fits no other: after one prime set aside, F4
+    // runs afresh on the next refused one, and the vote between the groups gives the basis.
+    options.primes = {p, other};
+    ModularStats unlucky_first;
+    const GroebnerResult r3 = modular_groebner(ideal.generators, options, &unlucky_first);
+    EXPECT_EQ(normalized(r3.basis, *ideal.ring), expected);
+    EXPECT_GE(unlucky_first.replays_refused, 2u);
+    EXPECT_EQ(unlucky_first.replays_refused_set_aside, 1u);
+    EXPECT_TRUE(unlucky_first.certified);
+    // Batches replayed side by side on two threads: the same basis.
+    options.primes = {other, p};
+    options.threads = 2;
+    const GroebnerResult r4 = modular_groebner(ideal.generators, options);
+    EXPECT_EQ(normalized(r4.basis, *ideal.ring), expected);
+    options.threads = 1;
     // Without tracing, the same basis.
     options.trace = false;
     ModularStats untraced;
