@@ -51,8 +51,9 @@ TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
     for (const std::string& kernel : lanes::supported_kernels()) {
         lanes::select_kernels(kernel);
         EXPECT_EQ(kernel, lanes::kernel_name());
-        // 72 lanes: past the widths the AVX-512 kernels are specialised for.
-        for (const std::size_t width : {8u, 16u, 24u, 40u, 72u}) {
+        // 72, 104 and 128 lanes: past the widths the AVX-512 kernels are specialised for, done
+        // in chunks of 64 and a tail of 8, 40 or 64.
+        for (const std::size_t width : {8u, 16u, 24u, 40u, 72u, 104u, 128u}) {
             const LanePrimes primes = primes_for(width);
             std::vector<std::uint32_t> x(width), y(width), out(width);
             const auto random_residues = [&](std::vector<std::uint32_t>& v, bool below_p) {
