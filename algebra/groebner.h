@@ -59,7 +59,7 @@ struct GroebnerRequest {
 
     // The modular algorithm over Q (also as the automatic route's second stage).
     bool certify = true;  // false: the lifted basis is probabilistic
-    int threads = 1;      // for the certification
+    int threads = 1;      // for the modular route (replays, certification; beside auto's probe)
 };
 
 struct GroebnerAnswer {

@@ -90,7 +90,9 @@ struct GroebnerOptions {
     // Called after every S-pair with the state so far (for progress bars; throttle inside).
     std::function<void(const GroebnerProgress&)> progress;
     // For the multi-modular route of groebner_automatic: certify its result (false: the result
-    // is probabilistic), on this many threads (Buchberger itself is sequential).
+    // is probabilistic), on this many threads (replays side by side, the certification's
+    // S-pairs; with two or more, the route starts beside auto's probe). Buchberger and the
+    // signature algorithm themselves are sequential.
     bool certify = true;
     int threads = 1;
 };

@@ -11,6 +11,9 @@
 // was lucky, which the majority vote makes overwhelmingly likely but does not prove.
 #pragma once
 
+#include <algorithm>
+#include <atomic>
+
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -38,6 +41,13 @@ struct ModularOptions {
     // Threads for the replays (batches of primes side by side) and the certification's S-pairs
     // (verify.h); 1 keeps everything on this thread.
     int threads = 1;
+    // While this flag is set, one of the threads is taken by other work (auto's probe runs
+    // beside the route): the route then runs on one thread fewer.
+    const std::atomic<bool>* one_thread_taken = nullptr;
+    int threads_now() const {
+        const bool taken = one_thread_taken != nullptr && one_thread_taken->load();
+        return std::max(1, threads - (taken ? 1 : 0));
+    }
 };
 
 struct ModularStats {

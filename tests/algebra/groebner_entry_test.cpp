@@ -4,6 +4,7 @@
 #include "algebra/groebner.h"
 
 #include "algebra/groebner/signature_groebner.h"
+#include "algebra/modular/modular_groebner.h"
 
 #include <gtest/gtest.h>
 
@@ -119,6 +120,40 @@ TEST(GroebnerEntry, AlgorithmNamesRoundTrip) {
 
 namespace locus::algebra {
 namespace {
+
+// With two threads, above the shape threshold, the modular route starts beside the probe and is
+// cancelled when the probe answers: the route, and so the answer, are the probe's to decide as
+// on one thread (noon-7: signatures; cyclic-7: modular), and a caller's budget still stops it.
+TEST(GroebnerEntry, AutomaticRouteIsTheSameWithTheModularRouteBesideTheProbe) {
+    for (const std::string name : {"noon7.ideal", "cyclic7.ideal"}) {
+        const IdealFile ideal =
+            parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/" + name));
+        GroebnerOptions one, two;
+        two.threads = 2;
+        bool modular_one = false, modular_two = false;
+        const GroebnerResult a = groebner_automatic(ideal.generators, one, nullptr, &modular_one);
+        ModularStats stats;
+        const GroebnerResult b = groebner_automatic(ideal.generators, two, &stats, &modular_two);
+        ASSERT_EQ(a.outcome, GroebnerOutcome::complete) << name;
+        ASSERT_EQ(b.outcome, GroebnerOutcome::complete) << name;
+        EXPECT_EQ(modular_one, modular_two) << name;
+        EXPECT_EQ(modular_two, name == "cyclic7.ideal");
+        EXPECT_EQ(a.basis, b.basis) << name;
+        if (modular_two) {
+            EXPECT_TRUE(stats.certified) << name;  // the stats are the route's that answered
+            EXPECT_GT(stats.primes_used.size(), 1u) << name;
+        }
+    }
+    const IdealFile k10 =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura10.ideal"));
+    GroebnerOptions callers;
+    callers.max_reduction_steps = 100;
+    callers.threads = 2;
+    bool modular = true;
+    const GroebnerResult limited = groebner_automatic(k10.generators, callers, nullptr, &modular);
+    EXPECT_EQ(limited.outcome, GroebnerOutcome::stopped_size);
+    EXPECT_FALSE(modular);
+}
 
 // `auto` takes its route from the input's shape, a budget of reduction steps and the growth of
 // coefficients, never from the clock: the same route on every run (the wall-clock probe sent
