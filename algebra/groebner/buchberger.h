@@ -81,10 +81,12 @@ struct GroebnerOptions {
     // of work rather than time, so that `auto`'s probe stops at the same point on every run and
     // every machine.
     std::size_t max_reduction_steps = 0;
-    // Stop (outcome stopped_size) when an element whose coefficients reach `growth_bits` bits
-    // joins a basis of fewer than `growth_basis` elements; 0 = no limit. Watched by the
-    // signature algorithm only, for `auto`'s probe: coefficients that grow while the basis is
-    // still small are what the computation over Q pays for and the modular one does not.
+    // Stop (outcome stopped_size) when an element whose coefficients reach b ≥ `growth_bits`
+    // bits joins a basis of fewer than growth_basis·b/growth_bits elements (the line through
+    // (growth_bits, growth_basis) and the origin: a growth rate, bits per element); 0 = no
+    // limit. Watched by the signature algorithm only, for `auto`'s probe: coefficients that
+    // grow while the basis is still small are what the computation over Q pays for and the
+    // modular one does not.
     std::size_t growth_bits = 0;
     std::size_t growth_basis = 0;
     // Called after every S-pair with the state so far (for progress bars; throttle inside).

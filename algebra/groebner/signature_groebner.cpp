@@ -426,13 +426,14 @@ GroebnerResult SignatureRun::run(const GroebnerOptions& options, const RingPtr& 
             result.stats.reduction_steps = reduction_.steps;
             return result;
         }
-        const bool grew_early = options.growth_bits != 0 && basis_.size() < options.growth_basis &&
-                                largest_coefficient_bits(h) >= options.growth_bits;
+        const std::size_t bits = options.growth_bits != 0 ? largest_coefficient_bits(h) : 0;
+        const bool grew_early = options.growth_bits != 0 && bits >= options.growth_bits &&
+                                basis_.size() * options.growth_bits < options.growth_basis * bits;
         add_element(std::move(h));
         if (grew_early) {
             result.outcome = GroebnerOutcome::stopped_size;
-            result.reason = "coefficients of " + std::to_string(options.growth_bits) +
-                            " bits in a basis of " + std::to_string(basis_.size()) + " elements";
+            result.reason = "coefficients of " + std::to_string(bits) + " bits in a basis of " +
+                            std::to_string(basis_.size()) + " elements";
             break;
         }
     }

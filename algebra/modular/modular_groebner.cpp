@@ -515,10 +515,14 @@ double bezout_bound(std::span<const Polynomial> generators) {
 // coefficient of the basis so far): katsura-10 reaches 128 bits with 32 elements (signatures
 // 4.1 s, modular 2.9 s), cyclic-7 with 277 (1.9 s against 0.44 s), cyclic-8 with 439, while
 // eco-10 ends at 101 bits (0.33 s against 0.62 s), noon-7 at 40 (0.09 s against 0.36 s) and
-// eco-11 reaches 128 bits only with 961 elements (3.6 s against 8.9 s). So above the shape the
-// signature algorithm runs until an element of 128 bits joins a basis of fewer than 512
-// elements, or 2 000 000 reduction steps, and the modular algorithm takes over; the probe costs
-// cyclic-7 0.16 s and cyclic-8 1.7 s. Neither a budget of steps alone (cyclic-7 spent 1 s in
+// eco-11 reaches 128 bits only with 961 elements (3.6 s against 8.9 s). Read as a rate, the
+// cases that belong to the modular route grow faster than a bit per four elements (cyclic-8:
+// 69 bits with 216 elements, cyclic-7: 68 with 218, katsura-10: 72 with 29) and the others do
+// not (eco-10: 69 bits with 466, 101 with 477; eco-11: 69 with 864, 156 with 964; noon-7: 38
+// with 523). So above the shape the signature algorithm runs until an element of b ≥ 64 bits
+// joins a basis of fewer than 4·b elements, or 2 000 000 reduction steps, and the modular
+// algorithm takes over; the probe costs cyclic-7 0.1 s and cyclic-8 0.3 s (at 128 bits within
+// 512 elements it cost 1.7 s). Neither a budget of steps alone (cyclic-7 spent 1 s in
 // it) nor the size of a basis modulo p separated these cases. Under lex and elimination orders
 // FGLM wins on zero-dimensional ideals (katsura5_lex 1.6 ms against 11 ms), while the small
 // suite cases finish by signatures in 3 to 149 reduction steps: a budget of 300.
@@ -583,7 +587,8 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     const bool degree_order = ring->order().is_degree_order();
     constexpr double kModularShape = 4500;  // Bézout's bound times the number of variables
     constexpr std::size_t kDegreeOrderBudget = 80000, kOtherOrderBudget = 300;
-    constexpr std::size_t kGrowthBits = 128, kGrowthBasis = 512, kLargeShapeBudget = 2000000;
+    // Growth: 64 bits within 256 elements, 128 within 512, … (four elements a bit).
+    constexpr std::size_t kGrowthBits = 64, kGrowthBasis = 256, kLargeShapeBudget = 2000000;
     GroebnerResult result;
     const double shape = bezout_bound(generators) * static_cast<double>(ring->num_vars());
     GroebnerOptions probing = options;

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "algebra/error.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
@@ -176,8 +178,8 @@ TEST(GroebnerEntry, AutomaticRouteIsDecidedByShapeAndWork) {
         EXPECT_FALSE(route("katsura8.ideal"));
     }
     // Large by Bézout's bound (times the variables, above 4500): the signature algorithm until
-    // coefficients of 128 bits appear in a basis of fewer than 512 elements.
-    EXPECT_TRUE(route("cyclic7.ideal"));    // 128 bits with 277 elements
+    // coefficients of b ≥ 64 bits appear in a basis of fewer than 4·b elements.
+    EXPECT_TRUE(route("cyclic7.ideal"));    // 68 bits with 218 elements
     EXPECT_FALSE(route("noon7.ideal"));     // 40 bits at the end
     EXPECT_FALSE(route("henrion5.ideal"));  // Bézout 120 · 6: below the shape, signatures
     // The growth rule itself: katsura-10's coefficients pass 128 bits within its first 40
@@ -189,8 +191,28 @@ TEST(GroebnerEntry, AutomaticRouteIsDecidedByShapeAndWork) {
     growth.growth_basis = 512;
     const GroebnerResult grown = signature_groebner(k10.generators, growth);
     EXPECT_EQ(grown.outcome, GroebnerOutcome::stopped_size);
-    EXPECT_NE(grown.reason.find("128 bits"), std::string::npos) << grown.reason;
+    EXPECT_NE(grown.reason.find(" bits in a basis of "), std::string::npos) << grown.reason;
     EXPECT_LT(grown.stats.reduction_steps, 5000u);
+    // The rule is a rate: b ≥ 64 bits within fewer than 4·b elements (auto's setting). Cyclic-7
+    // crosses it (68 bits with 218 elements); eco-10 never does (101 bits with 477 elements at
+    // its end) and completes.
+    GroebnerOptions rate;
+    rate.growth_bits = 64;
+    rate.growth_basis = 256;
+    const IdealFile c7 =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic7.ideal"));
+    const GroebnerResult crossed = signature_groebner(c7.generators, rate);
+    ASSERT_EQ(crossed.outcome, GroebnerOutcome::stopped_size);
+    std::size_t bits = 0, elements = 0;
+    ASSERT_EQ(std::sscanf(crossed.reason.c_str(), "coefficients of %zu bits in a basis of %zu",
+                          &bits, &elements),
+              2)
+        << crossed.reason;
+    EXPECT_GE(bits, 64u);
+    EXPECT_LT(elements, 4 * bits);
+    const IdealFile e10 =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/eco10.ideal"));
+    EXPECT_EQ(signature_groebner(e10.generators, rate).outcome, GroebnerOutcome::complete);
     // A caller's own budget of steps is the caller's: `auto` stops there rather than handing
     // the ideal to the modular algorithm.
     GroebnerOptions callers;
