@@ -339,6 +339,10 @@ std::string to_string(const Polynomial& f) {
     return plain_polynomial(f, f.ring()->variable_names());
 }
 
+std::string to_string(const Polynomial& f, const std::vector<std::string>& names) {
+    return plain_polynomial(f, names);
+}
+
 std::string to_latex(const Polynomial& f) {
     const PolyRing& ring = *f.ring();
     auto monomial = [&](const std::vector<std::uint32_t>& e) {

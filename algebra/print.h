@@ -34,6 +34,8 @@ enum class OutputFormat {
 OutputFormat parse_output_format(std::string_view name);
 
 std::string to_string(const Polynomial& f);
+// f with its variables called `names` (one a variable of f's ring), e.g. for another system.
+std::string to_string(const Polynomial& f, const std::vector<std::string>& names);
 std::string to_latex(const Polynomial& f);
 
 // Monic, sorted by leading monomial ascending, zeros dropped.

@@ -2,10 +2,12 @@
 
 #include <unistd.h>  // for getpid
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "algebra/print.h"
 
@@ -28,34 +30,42 @@ Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal
     default:
         return {-1, 0};
     }
-    std::string generators, variables;
+    // The ring's variables are renamed v0, v1, …: a name of the input could be one of Giac's
+    // constants (i, e, pi, D) or a name of the script (henrion5 has a variable t).
+    std::vector<std::string> names;
+    std::string variables;
+    for (std::size_t v = 0; v < ring.num_vars(); ++v) {
+        std::string name = "v";
+        name += std::to_string(v);
+        names.push_back(std::move(name));
+        if (v != 0) {
+            variables += ',';
+        }
+        variables += names.back();
+    }
+    std::string generators;
     for (const algebra::Polynomial& f : ideal.generators) {
         if (!generators.empty()) {
             generators += ',';
         }
         // Over GF(p) Giac takes the residues itself: `(f) % p` is f with coefficients mod p.
         if (ideal.characteristic == 0) {
-            generators += algebra::to_string(f);
+            generators += algebra::to_string(f, names);
         } else {
             generators += '(';
-            generators += algebra::to_string(f);
+            generators += algebra::to_string(f, names);
             generators += ")%";
             generators += std::to_string(ideal.characteristic);
         }
     }
-    for (std::size_t v = 0; v < ring.num_vars(); ++v) {
-        if (v != 0) {
-            variables += ',';
-        }
-        variables += ring.variable_name(v);
-    }
     const std::string call = "gbasis([" + generators + "],[" + variables + "]," + order + ")";
-    // One statement a line: Giac reads its input line by line. time() gives [cpu, real].
+    // Giac's time() repeats the call itself (1, 10, 100, … times, until 0.1 s have passed)
+    // and gives the mean [cpu, real] of one call: one time() is the measurement, and
+    // `min_seconds` has nothing to add. One statement a line: Giac reads line by line.
+    (void)min_seconds;
     std::string script = "threads:=" + std::to_string(threads) + ";\n";
-    script += "t:=time(" + call + ");s:=t[1];n:=1;\n";  // at least one run
-    script += "while (s < " + std::to_string(min_seconds) + " and n < " + std::to_string(kMaxRuns) +
-              ") { t:=time(" + call + "); s:=s+t[1]; n:=n+1; };\n";
-    script += "print(\"LOCUSBENCH\", s, n);\n";
+    script += "locusbench_t:=time(" + call + ");\n";
+    script += "print(\"LOCUSBENCH\", locusbench_t[1], 1);\n";
     const auto path = std::filesystem::temp_directory_path() /
                       ("locus-bench-" + std::to_string(::getpid()) + ".giac");
     {
@@ -64,9 +74,14 @@ Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal
     }
     std::string command;
     if (limit_seconds > 0) {
-        command = "timeout " + std::to_string(std::lround(limit_seconds)) + " ";
+        command =
+            "timeout " + std::to_string(std::max(1L, std::lround(std::ceil(limit_seconds)))) + " ";
     }
-    command += giac + " < " + path.string() + " 2>&1";
+    command += '\'';
+    command += giac;
+    command += "' < '";
+    command += path.string();
+    command += "' 2>&1";
     Timing t{-1, 0};
     if (FILE* pipe = popen(command.c_str(), "r")) {
         char line[4096];

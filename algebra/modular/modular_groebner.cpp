@@ -304,8 +304,12 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             const std::size_t batch = tracing && trace && !confirming ? (batches == 0 ? 8 : 16) : 1;
             // With several threads, that many batches at once, each on its own thread: the
             // replays of different primes share nothing but the (read-only) trace.
+            // At most four batches at once: each holds a basis a prime until the lift has
+            // seen it (cyclic-8: two batches, 0.55 GB).
             const std::size_t parallel =
-                batch > 1 ? static_cast<std::size_t>(options.threads_now()) : 1;
+                batch > 1
+                    ? std::min<std::size_t>(4, static_cast<std::size_t>(options.threads_now()))
+                    : 1;
             while (ready.size() < batch * parallel) {
                 std::optional<Prepared> item = next_usable();
                 if (!item) {
@@ -451,7 +455,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 s.certified = true;
             }
             std::size_t in_group = group->primes();
-            s.unlucky_primes = s.primes_used.size() - 1 - in_group;
+            s.unlucky_primes = s.primes_used.size() - 1 - in_group - s.replays_refused_set_aside;
             result.basis = std::move(candidate);
             result.stats.seconds = seconds_since(start);
             result.stats.max_basis_size = result.basis.size();
@@ -529,19 +533,27 @@ double bezout_bound(std::span<const Polynomial> generators) {
 namespace {
 
 // The modular route run on a thread of its own, cancelled (and waited for) on destruction
-// unless its result was taken.
+// unless its result was taken. It polls a deadline of its own (so that it can be cancelled
+// alone); the caller's deadline — and a cancellation of it, which the Python bindings make on
+// Ctrl-C — reaches it through `result`, which watches the caller's deadline while it waits.
 class SpeculativeModular {
   public:
-    SpeculativeModular(std::span<const Polynomial> generators, ModularOptions options) {
+    SpeculativeModular(std::span<const Polynomial> generators, ModularOptions options)
+        : callers_deadline_(options.deadline) {
         deadline_ =
             cancellable_deadline(options.deadline.value_or(std::chrono::steady_clock::now() +
                                                            std::chrono::hours(24 * 365)),
                                  &cancelled_);
         options.deadline = deadline_;
-        run_ = std::async(
-            std::launch::async,
-            [this, inputs = std::vector<Polynomial>(generators.begin(), generators.end()),
-             options] { return modular_groebner(inputs, options, &stats_); });
+        try {
+            run_ = std::async(
+                std::launch::async,
+                [this, inputs = std::vector<Polynomial>(generators.begin(), generators.end()),
+                 options] { return modular_groebner(inputs, options, &stats_); });
+        } catch (...) {
+            forget_cancellable_deadline(deadline_);  // no thread: nothing polls the flag
+            throw;
+        }
     }
     ~SpeculativeModular() {
         cancelled_ = true;
@@ -556,16 +568,30 @@ class SpeculativeModular {
     SpeculativeModular(const SpeculativeModular&) = delete;
     SpeculativeModular& operator=(const SpeculativeModular&) = delete;
 
-    // Waits for the route's result (rethrowing what it threw).
+    // Waits for the route's result (rethrowing what it threw, Timeout when the caller's
+    // deadline passed or was cancelled); the route's statistics either way.
     GroebnerResult result(ModularStats* stats) {
-        GroebnerResult out = run_.get();
-        if (stats != nullptr) {
-            *stats = stats_;
+        while (run_.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+            if (deadline_passed(callers_deadline_)) {
+                cancelled_ = true;  // the route stops at its next poll and throws Timeout
+            }
         }
-        return out;
+        try {
+            GroebnerResult out = run_.get();
+            if (stats != nullptr) {
+                *stats = stats_;
+            }
+            return out;
+        } catch (...) {
+            if (stats != nullptr) {
+                *stats = stats_;
+            }
+            throw;
+        }
     }
 
   private:
+    std::optional<std::chrono::steady_clock::time_point> callers_deadline_;
     std::atomic<bool> cancelled_{false};
     std::chrono::steady_clock::time_point deadline_;
     ModularStats stats_;

@@ -8,8 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 
+#include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
@@ -155,6 +159,38 @@ TEST(GroebnerEntry, AutomaticRouteIsTheSameWithTheModularRouteBesideTheProbe) {
     const GroebnerResult limited = groebner_automatic(k10.generators, callers, nullptr, &modular);
     EXPECT_EQ(limited.outcome, GroebnerOutcome::stopped_size);
     EXPECT_FALSE(modular);
+}
+
+// A cancellation of the caller's deadline (what the Python bindings do on Ctrl-C) stops the
+// modular route started beside the probe, also after the probe has handed over to it: cyclic-8
+// hands over after about 0.3 s and the route then runs for seconds.
+TEST(GroebnerEntry, CancellingTheCallersDeadlineStopsTheRouteBesideTheProbe) {
+    const IdealFile c8 =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic8.ideal"));
+    std::atomic<bool> cancelled{false};
+    const auto deadline =
+        cancellable_deadline(std::chrono::steady_clock::now() + std::chrono::hours(1), &cancelled);
+    GroebnerOptions options;
+    options.threads = 2;
+    options.deadline = deadline;
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1200));
+        cancelled = true;
+    });
+    const auto start = std::chrono::steady_clock::now();
+    bool stopped = false;
+    try {
+        stopped =
+            groebner_automatic(c8.generators, options).outcome == GroebnerOutcome::stopped_timeout;
+    } catch (const Timeout&) {
+        stopped = true;
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    canceller.join();
+    forget_cancellable_deadline(deadline);
+    EXPECT_TRUE(stopped);
+    EXPECT_LT(seconds, 3.0);  // the whole computation takes 8 s on two threads
 }
 
 // `auto` takes its route from the input's shape, a budget of reduction steps and the growth of
