@@ -137,6 +137,7 @@ GroebnerAnswer groebner(std::span<const Polynomial> generators, const GroebnerRe
         modular_options.deadline = request.deadline;
         modular_options.certify = request.certify;
         modular_options.threads = request.threads;
+        modular_options.progress = request.progress;
         result = modular_groebner(generators, modular_options, &modular_stats);
         used_modular = true;
         break;

@@ -201,7 +201,7 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     }();
     algebra::IdealFile ideal = read_ideal(args.file, args.order);
     algebra::GroebnerRequest request = request_of(args, ideal, deadline);
-    if (request.characteristic == 0 && request.algorithm != algebra::Algorithm::modular) {
+    if (request.characteristic == 0) {
         request.progress = progress.groebner("groebner");
     }
     algebra::GroebnerAnswer answer;

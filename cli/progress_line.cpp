@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <memory>
+#include <string_view>
 
 namespace locus::cli {
 
@@ -21,8 +22,20 @@ std::function<void(const algebra::GroebnerProgress&)> ProgressLine::groebner(
             return;
         }
         *last = now;
-        std::fprintf(out_, "\r%s: %zu pairs done, %zu left, basis %zu, sugar %u   ", label.c_str(),
-                     p.pairs_done, p.pairs_left, p.basis_size, p.current_sugar);
+        if (p.stage == nullptr) {
+            std::fprintf(out_, "\r%s: %zu pairs done, %zu left, basis %zu, sugar %u   ",
+                         label.c_str(), p.pairs_done, p.pairs_left, p.basis_size, p.current_sugar);
+        } else if (std::string_view(p.stage) == "F4") {
+            std::fprintf(out_, "\r\033[K%s: modular, F4 step %zu modulo a prime, basis %zu",
+                         label.c_str(), p.pairs_done, p.basis_size);
+        } else if (std::string_view(p.stage) == "primes") {
+            std::fprintf(out_, "\r\033[K%s: modular, %zu primes, basis %zu modulo the last",
+                         label.c_str(), p.pairs_done, p.basis_size);
+        } else {
+            std::fprintf(out_, "\r\033[K%s: %s, %zu of %zu S-pairs reduced to zero, basis %zu",
+                         label.c_str(), p.stage, p.pairs_done, p.pairs_done + p.pairs_left,
+                         p.basis_size);
+        }
         std::fflush(out_);
         shown_ = true;
     };

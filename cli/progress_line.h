@@ -18,8 +18,9 @@ class ProgressLine {
     ProgressLine(const ProgressLine&) = delete;
     ProgressLine& operator=(const ProgressLine&) = delete;
 
-    // A callback for Gröbner-basis work ("label: 120 pairs done, 40 left, basis 31, sugar 7"),
-    // redrawn at most ten times a second; empty when not on a terminal.
+    // A callback for Gröbner-basis work ("label: 120 pairs done, 40 left, basis 31, sugar 7";
+    // the modular route: "label: modular, 12 primes, …", "label: certification, 300 of 912
+    // S-pairs …"), redrawn at most ten times a second; empty when not on a terminal.
     std::function<void(const algebra::GroebnerProgress&)> groebner(const std::string& label);
     // A callback for work measured as a finished fraction ("label [####    ]  50%"); each call
     // draws (the caller throttles); empty when not on a terminal.

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <memory>
 
+#include <mutex>
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -74,7 +76,8 @@ BasisCheck check_groebner_basis(std::span<const Polynomial> basis,
 BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                                   std::span<const Polynomial> generators,
                                   std::optional<std::chrono::steady_clock::time_point> deadline,
-                                  int threads) {
+                                  int threads,
+                                  const std::function<void(std::size_t, std::size_t)>& progress) {
     BasisCheck check;
     if (basis.empty()) {
         for (const Polynomial& g : generators) {
@@ -117,12 +120,24 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             return r.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(),
                                                   pair_steps);
         };
+        // Progress after each pair: one report at a time; a thread that finds another reporting
+        // goes on without waiting.
+        std::atomic<std::size_t> pairs_done{0};
+        std::mutex reporting;
+        const auto report = [&] {
+            const std::size_t done = ++pairs_done;
+            if (progress && reporting.try_lock()) {
+                progress(done, pairs.size());
+                reporting.unlock();
+            }
+        };
         std::size_t failed = pairs.size();  // the first pair, in order, that does not reduce
         if (threads <= 1 || pairs.size() < 2) {
             for (std::size_t k = 0; k < pairs.size() && failed == pairs.size(); ++k) {
                 if (!pair_reduces(reducer, pairs[k], steps)) {
                     failed = k;
                 }
+                report();
             }
         } else {
             std::atomic<std::size_t> first_failure{pairs.size()};
@@ -150,6 +165,7 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                                 while (k < seen && !first_failure.compare_exchange_weak(seen, k)) {
                                 }
                             }
+                            report();
                         }
                     });
             });

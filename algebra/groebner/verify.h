@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -55,10 +56,13 @@ bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polyno
 // check takes 0.8 s.
 // Throws Timeout once `deadline` passes (checked every few reduction steps). The S-pairs are
 // independent: with `threads` > 1 they are reduced on that many threads (oneTBB), and a
-// failure reports the first failing pair in order, as on one thread.
+// failure reports the first failing pair in order, as on one thread. `progress`, when given, is
+// told the S-pairs done and their number after each pair (one call at a time, from any thread;
+// calls that would wait for another are skipped).
 BasisCheck certify_groebner_basis(
     std::span<const Polynomial> basis, std::span<const Polynomial> generators,
-    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt, int threads = 1);
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt, int threads = 1,
+    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 // Which vector kernels the certification's residue arithmetic runs on this processor:
 // "avx512", "avx2" or "portable".
 const char* certification_kernels();

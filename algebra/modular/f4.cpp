@@ -144,6 +144,9 @@ void F4Engine::step() {
     for (ModularPolynomial& poly : new_elements(fresh, column_monomials)) {
         add_element(std::move(poly), degree);
     }
+    if (options_.progress) {
+        options_.progress(stats_.steps, basis_.size());
+    }
 }
 
 // The monic reduced basis: a minimal set of leading monomials, every tail reduced by one

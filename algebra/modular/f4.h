@@ -11,6 +11,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -36,6 +37,8 @@ struct F4Stats {
 struct F4Options {
     // Throws Timeout (algebra/error.h) once this instant passes; checked per row.
     std::optional<std::chrono::steady_clock::time_point> deadline;
+    // Called after each step of a run (not of a replay) with the steps done and the basis size.
+    std::function<void(std::size_t steps, std::size_t basis_size)> progress;
 };
 
 // What one run of F4 did, for repeating it modulo other primes (Traverso's tracing, as in

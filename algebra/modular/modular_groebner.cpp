@@ -231,6 +231,16 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     const MonomialLayout& layout = ring->layout();
     modular::F4Options f4_options;
     f4_options.deadline = options.deadline;
+    if (options.progress) {
+        // F4's steps on a prime (the first prime's run is the long one before any replay).
+        f4_options.progress = [&](std::size_t steps, std::size_t basis_size) {
+            GroebnerProgress report;
+            report.stage = "F4";
+            report.pairs_done = steps;
+            report.basis_size = basis_size;
+            options.progress(report);
+        };
+    }
     // Under lex and other non-degree orders a zero-dimensional ideal is computed under grevlex
     // and converted by FGLM; `via_grevlex` is dropped as soon as the ideal turns out not to be
     // zero-dimensional.
@@ -435,8 +445,19 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             std::vector<Polynomial> candidate = *group->candidate;
             if (options.certify) {
                 const auto certify_start = Clock::now();
+                std::function<void(std::size_t, std::size_t)> certifying;
+                if (options.progress) {
+                    certifying = [&](std::size_t done, std::size_t total) {
+                        GroebnerProgress report;
+                        report.stage = "certification";
+                        report.pairs_done = done;
+                        report.pairs_left = total - done;
+                        report.basis_size = candidate.size();
+                        options.progress(report);
+                    };
+                }
                 const BasisCheck check = certify_groebner_basis(candidate, inputs, options.deadline,
-                                                                options.threads_now());
+                                                                options.threads_now(), certifying);
                 s.certify_seconds += seconds_since(certify_start);
                 s.certification += check.work;
                 if (!check.ok) {
@@ -468,6 +489,13 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         }
         add_to_group(*group, basis, p, layout);
         group->candidate = reconstruct(*group, ring, options.deadline);
+        if (options.progress) {
+            GroebnerProgress progress;
+            progress.stage = "primes";
+            progress.pairs_done = s.primes_used.size();
+            progress.basis_size = basis.size();
+            options.progress(progress);
+        }
         s.lift_seconds += seconds_since(lift_start);
     }
     return stopped_with_generators(
@@ -636,6 +664,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     modular_options.deadline = options.deadline;
     modular_options.threads = options.threads;
     modular_options.certify = options.certify;
+    modular_options.progress = options.progress;
     // Above the shape threshold the probe may take seconds before it hands over (cyclic-8:
     // 1.7 s). With a second thread the modular route starts at once beside it, and is
     // cancelled when the probe answers: the probe's outcome alone still decides which
@@ -648,6 +677,15 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     if (degree_order && shape > kModularShape && options.threads >= 2) {
         ModularOptions beside = modular_options;
         beside.one_thread_taken = &probe_running;
+        // The route reports only once the probe is over: the two do not share the callback.
+        if (options.progress) {
+            beside.progress = [&probe_running,
+                               progress = options.progress](const GroebnerProgress& p) {
+                if (!probe_running.load()) {
+                    progress(p);
+                }
+            };
+        }
         ahead.emplace(generators, beside);
     }
     result = signature_groebner_or_buchberger(generators, probing);

@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -44,6 +45,10 @@ struct ModularOptions {
     // While this flag is set, one of the threads is taken by other work (auto's probe runs
     // beside the route): the route then runs on one thread fewer.
     const std::atomic<bool>* one_thread_taken = nullptr;
+    // Called after each F4 step on a prime, after every prime and, during the certification,
+    // after S-pairs (from any of the threads, one call at a time); stage "F4", "primes" or
+    // "certification" (GroebnerProgress).
+    std::function<void(const GroebnerProgress&)> progress;
     int threads_now() const {
         const bool taken = one_thread_taken != nullptr && one_thread_taken->load();
         return std::max(1, threads - (taken ? 1 : 0));

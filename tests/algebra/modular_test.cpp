@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <sstream>
 
 #include "algebra/error.h"
@@ -383,6 +385,48 @@ TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
     const GroebnerResult r2 = modular_groebner(ideal.generators, options, &untraced);
     EXPECT_EQ(normalized(r2.basis, *ideal.ring), normalized(r.basis, *ideal.ring));
     EXPECT_EQ(untraced.replayed, 0u);
+}
+
+// Progress of the modular route: F4's steps on the first prime, then the primes, then the
+// certification's S-pairs up to all of them; on two threads the calls never overlap.
+TEST(Modular, ProgressReportsEveryStageOneCallAtATime) {
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic6.ideal"));
+    for (const int threads : {1, 2}) {
+        std::vector<std::string> stages;
+        std::size_t last_done = 0, total = 0, primes = 0;
+        std::atomic<int> inside{0};
+        bool overlapped = false;
+        ModularOptions options;
+        options.threads = threads;
+        options.progress = [&](const GroebnerProgress& p) {
+            overlapped = overlapped || inside.fetch_add(1) != 0;
+            ASSERT_NE(p.stage, nullptr);
+            if (stages.empty() || stages.back() != p.stage) {
+                stages.emplace_back(p.stage);
+            }
+            if (std::string(p.stage) == "primes") {
+                EXPECT_GT(p.pairs_done, primes);
+                primes = p.pairs_done;
+            }
+            if (std::string(p.stage) == "certification") {
+                last_done = std::max(last_done, p.pairs_done);
+                total = p.pairs_done + p.pairs_left;
+            }
+            inside.fetch_sub(1);
+        };
+        ModularStats stats;
+        const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
+        ASSERT_EQ(r.outcome, GroebnerOutcome::complete);
+        EXPECT_FALSE(overlapped) << threads;
+        ASSERT_GE(stages.size(), 3u) << threads;
+        EXPECT_EQ(stages.front(), "F4");
+        EXPECT_EQ(stages.back(), "certification");
+        EXPECT_NE(std::find(stages.begin(), stages.end(), "primes"), stages.end());
+        EXPECT_EQ(primes, stats.primes_used.size() - 1);  // the last prime confirms, then certifies
+        EXPECT_GT(total, 0u);
+        EXPECT_EQ(last_done, total) << threads;
+    }
 }
 
 }  // namespace
