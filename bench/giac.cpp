@@ -1,15 +1,11 @@
 #include "bench/giac.h"
 
-#include <unistd.h>  // for getpid
-
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <vector>
 
 #include "algebra/print.h"
+#include "bench/script_run.h"
 
 namespace locus::bench {
 
@@ -66,35 +62,14 @@ Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal
     std::string script = "threads:=" + std::to_string(threads) + ";\n";
     script += "locusbench_t:=time(" + call + ");\n";
     script += "print(\"LOCUSBENCH\", locusbench_t[1], 1);\n";
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("locus-bench-" + std::to_string(::getpid()) + ".giac");
-    {
-        std::ofstream out(path);
-        out << script;
-    }
-    std::string command;
-    if (limit_seconds > 0) {
-        command =
-            "timeout " + std::to_string(std::max(1L, std::lround(std::ceil(limit_seconds)))) + " ";
-    }
-    command += '\'';
-    command += giac;
-    command += "' < '";
-    command += path.string();
-    command += "' 2>&1";
     Timing t{-1, 0};
-    if (FILE* pipe = popen(command.c_str(), "r")) {
-        char line[4096];
-        while (std::fgets(line, sizeof line, pipe)) {
-            double seconds = 0;
-            int runs = 0;
-            if (std::sscanf(line, "LOCUSBENCH,%lf,%d", &seconds, &runs) == 2 && runs > 0) {
-                t = {seconds / runs, runs};
-            }
+    run_script({giac, "", true, ".giac", limit_seconds}, script, [&](const char* line) {
+        double seconds = 0;
+        int runs = 0;
+        if (std::sscanf(line, "LOCUSBENCH,%lf,%d", &seconds, &runs) == 2 && runs > 0) {
+            t = {seconds / runs, runs};
         }
-        pclose(pipe);
-    }
-    std::filesystem::remove(path);
+    });
     return t;
 }
 

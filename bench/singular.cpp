@@ -1,14 +1,11 @@
 #include "bench/singular.h"
 
-#include <unistd.h>  // for getpid
-
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "algebra/print.h"
+#include "bench/script_run.h"
 #include "implicit/implicitize.h"
 
 namespace locus::bench {
@@ -35,33 +32,15 @@ std::string singular_preamble(const algebra::PolyRing& ring,
 // Singular failed or ran out of time.
 Timing run_singular_script(const std::string& singular, const std::string& script,
                            double limit_seconds = 0) {
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("locus-bench-" + std::to_string(::getpid()) + ".sing");
-    {
-        std::ofstream out(path);
-        out << script;
-    }
-    std::string command;
-    if (limit_seconds > 0) {
-        command = "timeout " + std::to_string(std::lround(limit_seconds)) + " ";
-    }
-    command += singular;
-    command += " -q --no-rc ";
-    command += path.string();
-    command += " </dev/null 2>&1";
     Timing t{-1, 0};
-    if (FILE* pipe = popen(command.c_str(), "r")) {
-        char line[4096];
-        while (std::fgets(line, sizeof line, pipe)) {
-            long us = 0;
-            int runs = 0;
-            if (std::sscanf(line, "LOCUSBENCH %ld %d", &us, &runs) == 2 && runs > 0) {
-                t = {static_cast<double>(us) / 1e6 / runs, runs};
-            }
-        }
-        pclose(pipe);
-    }
-    std::filesystem::remove(path);
+    run_script({singular, "-q --no-rc", false, ".sing", limit_seconds}, script,
+               [&](const char* line) {
+                   long us = 0;
+                   int runs = 0;
+                   if (std::sscanf(line, "LOCUSBENCH %ld %d", &us, &runs) == 2 && runs > 0) {
+                       t = {static_cast<double>(us) / 1e6 / runs, runs};
+                   }
+               });
     return t;
 }
 
