@@ -12,7 +12,7 @@ void F4Engine::append_element(ModularPolynomial poly) {
     const std::size_t h = basis_.size();
     fits_trace_.push_back(replaying_ != nullptr && h < replaying_->supports.size() &&
                           poly.monomials == replaying_->supports[h]);
-    basis_.push_back({std::move(poly), 0, false, 0});
+    basis_.push_back({std::move(poly), 0, false, 0, {}});
     basis_[h].mask = layout_.divisibility_mask(lead(h));
 }
 
@@ -23,7 +23,7 @@ void F4Engine::add_element(ModularPolynomial poly, std::uint32_t sugar) {
     if (record_ != nullptr) {
         record_->supports.push_back(poly.monomials);
     }
-    basis_.push_back({std::move(poly), 0, false, sugar});
+    basis_.push_back({std::move(poly), 0, false, sugar, {}});
     basis_[h].mask = layout_.divisibility_mask(lead(h));
     std::vector<Pair> fresh;
     for (std::size_t g = 0; g < h; ++g) {

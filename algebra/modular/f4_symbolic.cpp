@@ -7,10 +7,20 @@ namespace locus::algebra::modular::detail {
 
 RowSpec F4Engine::make_row(std::size_t element, const std::uint64_t* multiplier) {
     RowSpec row{element, {}};
-    const ModularPolynomial& f = basis_[element].poly;
+    Element& e = basis_[element];
+    const ModularPolynomial& f = e.poly;
+    if (e.term_hashes.empty()) {
+        e.term_hashes.reserve(f.size());
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            e.term_hashes.push_back(table_.hash(f.monomial(i, words_)));
+        }
+    }
+    const std::uint64_t multiplier_hash = table_.hash(multiplier);
     row.monomials.reserve(f.size());
     for (std::size_t i = 0; i < f.size(); ++i) {
-        row.monomials.push_back(product_index(multiplier, f.monomial(i, words_)));
+        layout_.multiply(multiplier, f.monomial(i, words_), scratch_.data());
+        row.monomials.push_back(
+            table_.insert_hashed(scratch_.data(), multiplier_hash + e.term_hashes[i]));
     }
     return row;
 }

@@ -30,6 +30,9 @@ struct Element {
     std::uint64_t mask;      // divisibility mask of the leading monomial
     bool redundant = false;  // a later element's leading monomial divides its own
     std::uint32_t sugar = 0;
+    // The monomial table's hashes of its terms, filled when it is first multiplied (make_row):
+    // a product's hash is the multiplier's plus the term's.
+    std::vector<std::uint64_t> term_hashes;
 };
 
 // `degree` is the sugar of the S-polynomial (Giovini et al. 1991): the degree it would have
@@ -122,11 +125,6 @@ class F4Engine {
         if (deadline_passed(options_.deadline)) {
             throw Timeout("F4 modulo " + std::to_string(field_.p));
         }
-    }
-
-    std::uint32_t product_index(const std::uint64_t* a, const std::uint64_t* b) {
-        layout_.multiply(a, b, scratch_.data());
-        return table_.insert(scratch_.data());
     }
 
     // Pair update and selection (f4_pairs.cpp).
