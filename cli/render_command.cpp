@@ -245,8 +245,24 @@ void warn_nothing_hit(const render::Scene& scene,
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         std::string reason;
         try {
-            reason = render::why_not_hit(scene.surfaces[i], compiled[i], camera, scene.width,
-                                         scene.height, extents[i], deadline);
+            const render::EmptyPictureReason why =
+                render::why_not_hit(scene.surfaces[i], compiled[i], camera, scene.width,
+                                    scene.height, extents[i], deadline);
+            reason = why.text;
+            using Remedy = render::EmptyPictureReason::Remedy;
+            switch (why.remedy) {
+            case Remedy::clip_region:
+                reason += " (give one: --clip-radius, or clip keys in a scene file)";
+                break;
+            case Remedy::fit:
+                reason += " (--fit frames it)";
+                break;
+            case Remedy::finer_sampling:
+                reason += " (try --samples or a closer --eye)";
+                break;
+            case Remedy::none:
+                break;
+            }
         } catch (const Timeout&) {
             reason = "(not examined: --timeout passed)";
         }

@@ -57,18 +57,19 @@ std::vector<std::optional<SurfaceExtent>> fit_clip_regions(
     return extents;
 }
 
-std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomial& f,
-                        const CameraSpec& camera, int width, int height,
-                        std::optional<SurfaceExtent> extent,
-                        std::optional<std::chrono::steady_clock::time_point> deadline) {
+EmptyPictureReason why_not_hit(const Surface& surface, const algebra::CompiledPolynomial& f,
+                               const CameraSpec& camera, int width, int height,
+                               std::optional<SurfaceExtent> extent,
+                               std::optional<std::chrono::steady_clock::time_point> deadline) {
+    using Remedy = EmptyPictureReason::Remedy;
     if (!extent) {
         extent = in_world(estimate_extent(f, 1024, deadline), surface.frame);
     }
     if (extent->kind == SurfaceExtent::Kind::none_found) {
-        return "no real point of it was found on " + std::to_string(extent->lines) +
-               " lines through the origin: it may have none (as x^2+y^2+z^2+1), or be too small "
-               "or too far from the origin to be met (then give a clip region: --clip-radius, "
-               "or clip keys in a scene file)";
+        return {"no real point of it was found on " + std::to_string(extent->lines) +
+                    " lines through the origin: it may have none (as x^2+y^2+z^2+1), or be too "
+                    "small or too far from the origin to be met without a clip region around it",
+                Remedy::clip_region};
     }
     std::optional<ClipBox> inside =
         box_in_region(f, to_local(surface.clip, surface.frame), 1024, deadline);
@@ -79,9 +80,11 @@ std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomia
         std::string where;
         if (extent->kind == SurfaceExtent::Kind::bounded) {
             where = "; the points found elsewhere span " + format_point(extent->low) + " to " +
-                    format_point(extent->high) + " (--fit frames it)";
+                    format_point(extent->high);
         }
-        return "no point of it was found inside its clip region, " + describe(surface.clip) + where;
+        return {
+            "no point of it was found inside its clip region, " + describe(surface.clip) + where,
+            extent->kind == SurfaceExtent::Kind::bounded ? Remedy::fit : Remedy::none};
     }
     const ClipSphere visible = bounding_sphere(ClipRegion(*inside));
     const Vec3 forward = glm::normalize(camera.target - camera.eye);
@@ -89,9 +92,10 @@ std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomia
     const double distance = glm::length(to_centre);
     const double along = glm::dot(to_centre, forward);
     if (along < -visible.radius) {
-        return "what can be seen of it, about " + format_point(visible.center) +
-               ", lies behind the camera (eye " + format_point(camera.eye) + ", looking at " +
-               format_point(camera.target) + ")";
+        return {"what can be seen of it, about " + format_point(visible.center) +
+                    ", lies behind the camera (eye " + format_point(camera.eye) + ", looking at " +
+                    format_point(camera.target) + ")",
+                Remedy::none};
     }
     if (distance > visible.radius) {
         // Half the diagonal field of view against the angle to the visible part's centre less
@@ -102,13 +106,16 @@ std::string why_not_hit(const Surface& surface, const algebra::CompiledPolynomia
         const double off_axis = std::acos(std::clamp(along / distance, -1.0, 1.0));
         const double subtended = std::asin(std::min(1.0, visible.radius / distance));
         if (off_axis - subtended > half_diagonal) {
-            return "what can be seen of it, about " + format_point(visible.center) +
-                   ", lies outside the camera's field of view (eye " + format_point(camera.eye) +
-                   ", looking at " + format_point(camera.target) + ")";
+            return {"what can be seen of it, about " + format_point(visible.center) +
+                        ", lies outside the camera's field of view (eye " +
+                        format_point(camera.eye) + ", looking at " + format_point(camera.target) +
+                        ")",
+                    Remedy::none};
         }
     }
-    return "no pixel's ray met it inside its clip region, " + describe(surface.clip) +
-           ": it may be thinner than a pixel there (try --samples or a closer --eye)";
+    return {"no pixel's ray met it inside its clip region, " + describe(surface.clip) +
+                ": it may be thinner than a pixel there",
+            Remedy::finer_sampling};
 }
 
 }  // namespace locus::render

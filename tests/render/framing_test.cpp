@@ -181,32 +181,38 @@ TEST(Framing, AGivenClipRegionIsKeptUnlessForced) {
 }
 
 TEST(Framing, AnEmptyPictureIsExplained) {
+    // Each reason in words, with the kind of remedy the front end names its way (the library's
+    // text names no command-line flag).
+    using Remedy = EmptyPictureReason::Remedy;
+    const auto expect = [](const EmptyPictureReason& why, const std::string& words, Remedy remedy) {
+        EXPECT_NE(why.text.find(words), std::string::npos) << why.text;
+        EXPECT_EQ(why.remedy, remedy) << why.text;
+        EXPECT_EQ(why.text.find("--"), std::string::npos) << why.text;
+    };
     Surface sphere;
     sphere.equation = "x^2+y^2+z^2-1";
     const algebra::CompiledPolynomial unit = algebra::compile_surface(sphere.equation);
     CameraSpec camera;  // eye (0, 0, 5) looking at the origin
     sphere.clip = ClipSphere{{0.0, 0.0, 0.0}, 0.5};
-    EXPECT_NE(why_not_hit(sphere, unit, camera, 32, 32).find("no point of it was found inside"),
-              std::string::npos);
+    expect(why_not_hit(sphere, unit, camera, 32, 32), "no point of it was found inside",
+           Remedy::fit);
     sphere.clip = ClipSphere{};
     CameraSpec away = camera;
     away.target = {0.0, 0.0, 9.0};
-    EXPECT_NE(why_not_hit(sphere, unit, away, 32, 32).find("behind the camera"), std::string::npos);
+    expect(why_not_hit(sphere, unit, away, 32, 32), "behind the camera", Remedy::none);
     away.target = {10.0, 0.0, 5.0};
-    EXPECT_NE(why_not_hit(sphere, unit, away, 32, 32).find("outside the camera's field of view"),
-              std::string::npos);
+    expect(why_not_hit(sphere, unit, away, 32, 32), "outside the camera's field of view",
+           Remedy::none);
     Surface imaginary;
     imaginary.equation = "x^2+y^2+z^2+1";
-    EXPECT_NE(why_not_hit(imaginary, algebra::compile_surface(imaginary.equation), camera, 32, 32)
-                  .find("no real point of it was found"),
-              std::string::npos);
-    // A cylinder (not bounded) clipped away from its wall.
+    expect(why_not_hit(imaginary, algebra::compile_surface(imaginary.equation), camera, 32, 32),
+           "no real point of it was found", Remedy::clip_region);
+    // A cylinder (not bounded) clipped away from its wall: no extent to frame.
     Surface cylinder;
     cylinder.equation = "x^2+y^2-1";
     cylinder.clip = ClipBox{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}};
-    const std::string reason =
-        why_not_hit(cylinder, algebra::compile_surface(cylinder.equation), camera, 32, 32);
-    EXPECT_NE(reason.find("inside its clip region, the box from"), std::string::npos) << reason;
+    expect(why_not_hit(cylinder, algebra::compile_surface(cylinder.equation), camera, 32, 32),
+           "inside its clip region, the box from", Remedy::none);
 }
 
 }  // namespace
