@@ -9,8 +9,8 @@
 
 namespace locus::bench {
 
-Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal,
-                        double min_seconds, int threads, double limit_seconds) {
+Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal, int threads,
+                        double limit_seconds) {
     const algebra::PolyRing& ring = *ideal.ring;
     const char* order = nullptr;
     switch (ring.order().kind()) {
@@ -56,18 +56,16 @@ Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal
     }
     const std::string call = "gbasis([" + generators + "],[" + variables + "]," + order + ")";
     // Giac's time() repeats the call itself (1, 10, 100, … times, until 0.1 s have passed)
-    // and gives the mean [cpu, real] of one call: one time() is the measurement, and
-    // `min_seconds` has nothing to add. One statement a line: Giac reads line by line.
-    (void)min_seconds;
+    // and gives the mean [cpu, real] of one call: one time() is the measurement. One statement
+    // a line: Giac reads line by line.
     std::string script = "threads:=" + std::to_string(threads) + ";\n";
     script += "locusbench_t:=time(" + call + ");\n";
-    script += "print(\"LOCUSBENCH\", locusbench_t[1], 1);\n";
+    script += "print(\"LOCUSBENCH\", locusbench_t[1]);\n";
     Timing t{-1, 0};
     run_script({giac, "", true, ".giac", limit_seconds}, script, [&](const char* line) {
         double seconds = 0;
-        int runs = 0;
-        if (std::sscanf(line, "LOCUSBENCH,%lf,%d", &seconds, &runs) == 2 && runs > 0) {
-            t = {seconds / runs, runs};
+        if (std::sscanf(line, "LOCUSBENCH,%lf", &seconds) == 1) {
+            t = {seconds, 1};
         }
     });
     return t;

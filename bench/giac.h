@@ -11,10 +11,10 @@
 
 namespace locus::bench {
 
-// Mean seconds of Giac's gbasis on the ideal, repeated until `min_seconds` have passed or
-// kMaxRuns runs; {-1, 0} when Giac failed, ran past `limit_seconds` (when > 0), or has no such
-// order (Giac knows lex, grlex and grevlex: plex, tdeg, revlex).
-Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal,
-                        double min_seconds, int threads, double limit_seconds = 0);
+// Mean seconds of Giac's gbasis on the ideal, as Giac's time() gives it (it repeats the call
+// until 0.1 s have passed); {-1, 0} when Giac failed, ran past `limit_seconds` (when > 0), or
+// has no such order (Giac knows lex, grlex and grevlex: plex, tdeg, revlex).
+Timing time_giac_gbasis(const std::string& giac, const algebra::IdealFile& ideal, int threads,
+                        double limit_seconds = 0);
 
 }  // namespace locus::bench

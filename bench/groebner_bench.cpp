@@ -85,8 +85,7 @@ int run_groebner_bench(const GroebnerBenchArgs& args) {
             theirs = time_singular_std(args.singular, ideal, args.suite.min_seconds);
         }
         if (with_giac) {
-            giac = time_giac_gbasis(args.giac, ideal, args.suite.min_seconds, args.threads,
-                                    args.giac_limit);
+            giac = time_giac_gbasis(args.giac, ideal, args.threads, args.giac_limit);
         }
         const double ratio = theirs.seconds > 0 ? mine.seconds / theirs.seconds : NAN;
         const double giac_ratio = giac.seconds > 0 ? mine.seconds / giac.seconds : NAN;

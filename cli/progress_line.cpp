@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <memory>
-#include <string_view>
 
 namespace locus::cli {
 
@@ -22,19 +21,25 @@ std::function<void(const algebra::GroebnerProgress&)> ProgressLine::groebner(
             return;
         }
         *last = now;
-        if (p.stage == nullptr) {
+        using Stage = algebra::GroebnerProgress::Stage;
+        switch (p.stage) {
+        case Stage::pairs:
             std::fprintf(out_, "\r%s: %zu pairs done, %zu left, basis %zu, sugar %u   ",
                          label.c_str(), p.pairs_done, p.pairs_left, p.basis_size, p.current_sugar);
-        } else if (std::string_view(p.stage) == "F4") {
+            break;
+        case Stage::f4:
             std::fprintf(out_, "\r\033[K%s: modular, F4 step %zu modulo a prime, basis %zu",
                          label.c_str(), p.pairs_done, p.basis_size);
-        } else if (std::string_view(p.stage) == "primes") {
+            break;
+        case Stage::primes:
             std::fprintf(out_, "\r\033[K%s: modular, %zu primes, basis %zu modulo the last",
                          label.c_str(), p.pairs_done, p.basis_size);
-        } else {
-            std::fprintf(out_, "\r\033[K%s: %s, %zu of %zu S-pairs reduced to zero, basis %zu",
-                         label.c_str(), p.stage, p.pairs_done, p.pairs_done + p.pairs_left,
-                         p.basis_size);
+            break;
+        case Stage::certification:
+            std::fprintf(out_,
+                         "\r\033[K%s: certification, %zu of %zu S-pairs reduced to zero, basis %zu",
+                         label.c_str(), p.pairs_done, p.pairs_done + p.pairs_left, p.basis_size);
+            break;
         }
         std::fflush(out_);
         shown_ = true;

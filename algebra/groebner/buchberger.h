@@ -68,11 +68,12 @@ struct GroebnerStats {
 struct GroebnerProgress {
     std::size_t pairs_done = 0, pairs_left = 0, basis_size = 0;
     std::uint32_t current_sugar = 0;
-    // The modular route's stage, nullptr for Buchberger and the signature algorithm. "F4":
-    // pairs_done steps of F4 modulo a prime, basis_size its basis so far; "primes": pairs_done
-    // primes used so far, basis_size the basis modulo the last; "certification": pairs_done of
-    // pairs_done + pairs_left S-pairs reduced to zero.
-    const char* stage = nullptr;
+    // What is counted. pairs: Buchberger's and the signature algorithm's S-pairs. The modular
+    // route's stages — f4: pairs_done steps of F4 modulo a prime, basis_size its basis so far;
+    // primes: pairs_done primes used so far, basis_size the basis modulo the last;
+    // certification: pairs_done of pairs_done + pairs_left S-pairs reduced to zero.
+    enum class Stage { pairs, f4, primes, certification };
+    Stage stage = Stage::pairs;
 };
 
 struct GroebnerOptions {

@@ -2,7 +2,6 @@
 
 #include <atomic>
 #include <memory>
-
 #include <mutex>
 
 #include <tbb/blocked_range.h>
@@ -121,7 +120,8 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                                                   pair_steps);
         };
         // Progress after each pair: one report at a time; a thread that finds another reporting
-        // goes on without waiting.
+        // goes on without waiting (so the last pair's report may be skipped: the count is
+        // reported once more when all are done).
         std::atomic<std::size_t> pairs_done{0};
         std::mutex reporting;
         const auto report = [&] {
@@ -177,6 +177,9 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             for (const detail::ReductionCounts& c : thread_steps) {
                 steps.steps += c.steps;
             }
+        }
+        if (progress) {
+            progress(pairs_done.load(), pairs.size());
         }
         add_statistics(reducer);
         check.work.reduction_steps = steps.steps;

@@ -161,8 +161,7 @@ std::vector<ModularPolynomial> F4Engine::reduced_basis() {
         const F4Trace::Step& final_step = replaying_->final_step;
         minimal = replaying_->final_elements;
         for (const F4Trace::Row& r : final_step.reducers) {
-            rows.push_back(
-                {r.columns.data(), basis_[r.element].poly.coefficients.data(), r.columns.size()});
+            rows.push_back(row_view(r));
         }
         column_monomials = final_step.column_monomials;
     } else {

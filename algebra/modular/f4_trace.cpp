@@ -74,8 +74,7 @@ bool F4Engine::replay_step(const F4Trace::Step& step) {
         if (r.element >= basis_.size() || !fits_trace_[r.element]) {
             return std::nullopt;
         }
-        return PivotRow{r.columns.data(), basis_[r.element].poly.coefficients.data(),
-                        r.columns.size()};
+        return row_view(r);
     };
     const std::size_t width = step.column_monomials.size() / words_;
     const std::size_t total_rows = step.reducers.size() + step.rows.size();

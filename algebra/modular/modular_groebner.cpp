@@ -235,7 +235,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         // F4's steps on a prime (the first prime's run is the long one before any replay).
         f4_options.progress = [&](std::size_t steps, std::size_t basis_size) {
             GroebnerProgress report;
-            report.stage = "F4";
+            report.stage = GroebnerProgress::Stage::f4;
             report.pairs_done = steps;
             report.basis_size = basis_size;
             options.progress(report);
@@ -449,7 +449,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 if (options.progress) {
                     certifying = [&](std::size_t done, std::size_t total) {
                         GroebnerProgress report;
-                        report.stage = "certification";
+                        report.stage = GroebnerProgress::Stage::certification;
                         report.pairs_done = done;
                         report.pairs_left = total - done;
                         report.basis_size = candidate.size();
@@ -491,7 +491,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         group->candidate = reconstruct(*group, ring, options.deadline);
         if (options.progress) {
             GroebnerProgress progress;
-            progress.stage = "primes";
+            progress.stage = GroebnerProgress::Stage::primes;
             progress.pairs_done = s.primes_used.size();
             progress.basis_size = basis.size();
             options.progress(progress);

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <atomic>
-
 #include <chrono>
 #include <cstdint>
 #include <functional>

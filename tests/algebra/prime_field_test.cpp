@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
+#include "tests/support/ideal_cases.h"
 
 namespace locus::algebra {
 namespace {
@@ -202,6 +204,52 @@ TEST(PrimeField, RowReductionIsRightWithAndWithoutLazySums) {
             EXPECT_TRUE(check.ok) << "p = " << p << ": " << check.failure;
             EXPECT_TRUE(is_reduced(basis)) << "p = " << p;
             EXPECT_EQ(leading_exponents(basis), leading_exponents(over_q.basis)) << "p = " << p;
+        }
+    }
+    // Inputs nobody chose: 60 random small ideals under six orders (tests/support) and 12
+    // ideals of five random dense quadrics in five variables (every monomial of degree ≤ 2,
+    // coefficients in [−9, 9]), modulo both primes, each basis checked by the division
+    // algorithm modulo p. Their matrices (up to about a hundred rows) are too small for a wrong
+    // bound to overflow — forcing lazy sums for 31-bit primes fails only the cases above — so
+    // these check the rest of the reduction (shared coefficients, the unrolled update).
+    std::vector<IdealFile> random_ideals;
+    for (int seed = 0; seed < test::seed_count(60); ++seed) {
+        std::mt19937_64 rng(static_cast<std::uint64_t>(seed) + 4000);
+        random_ideals.push_back(test::random_ideal(rng, seed));
+    }
+    std::vector<std::vector<std::uint32_t>> quadratic;  // exponents of degree ≤ 2 in 5 variables
+    for (std::uint32_t i = 0; i <= 5; ++i) {
+        for (std::uint32_t j = i; j <= 5; ++j) {
+            std::vector<std::uint32_t> e(5, 0);
+            for (const std::uint32_t v : {i, j}) {
+                if (v < 5) {
+                    ++e[v];
+                }
+            }
+            quadratic.push_back(e);
+        }
+    }
+    for (int seed = 0; seed < test::seed_count(12); ++seed) {
+        std::mt19937_64 rng(static_cast<std::uint64_t>(seed) + 5000);
+        std::uniform_int_distribution<long> coefficient(-9, 9);
+        IdealFile dense;
+        dense.ring = PolyRing::make({"a", "b", "c", "d", "e"}, MonomialOrder::grevlex(5));
+        for (int k = 0; k < 5; ++k) {
+            std::vector<std::pair<Rational, std::vector<std::uint32_t>>> terms;
+            for (const std::vector<std::uint32_t>& e : quadratic) {
+                terms.emplace_back(Rational(coefficient(rng)), e);
+            }
+            dense.generators.push_back(Polynomial::from_terms(dense.ring, std::move(terms)));
+        }
+        random_ideals.push_back(std::move(dense));
+    }
+    for (std::size_t seed = 0; seed < random_ideals.size(); ++seed) {
+        const IdealFile& ideal = random_ideals[seed];
+        for (const std::uint32_t p : {65521u, 2147483647u}) {
+            const std::vector<Polynomial> basis = groebner_modulo(ideal.generators, p);
+            const BasisCheck check = check_groebner_basis_modulo(basis, ideal.generators, p);
+            EXPECT_TRUE(check.ok) << "seed " << seed << ", p = " << p << ": " << check.failure;
+            EXPECT_TRUE(is_reduced(basis)) << "seed " << seed << ", p = " << p;
         }
     }
 }

@@ -153,6 +153,12 @@ class F4Engine {
     PivotRow row_view(const RowSpec& spec, const std::vector<std::uint32_t>& columns) const {
         return {columns.data(), basis_[spec.element].poly.coefficients.data(), columns.size()};
     }
+    // A recorded row (a replay): its element's coefficients on the recorded columns.
+    // Precondition: the element exists.
+    PivotRow row_view(const F4Trace::Row& row) const {
+        return {row.columns.data(), basis_[row.element].poly.coefficients.data(),
+                row.columns.size()};
+    }
 
     // Linear algebra (f4_linear_algebra.cpp).
     // Reduces `acc` (dense) from column `from` on by the pivots; returns the reduced row
