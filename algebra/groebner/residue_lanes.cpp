@@ -431,6 +431,11 @@ void shoup_quotients(std::uint32_t* out, const std::uint32_t* b, const LanePrime
 void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
                      const std::uint32_t* rows, const std::uint32_t* b,
                      const std::uint32_t* b_quotients, const LanePrimes& primes) {
+    // A reducer with no tail has no rows (a null pointer, which the kernels offset per block
+    // of lanes: undefined, found by the differential fuzzer): nothing to add.
+    if (n == 0) {
+        return;
+    }
     kernels().add_scaled_rows(table, columns, n, rows, b, b_quotients, primes.primes(),
                               primes.size());
 }

@@ -97,6 +97,11 @@ TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
             lanes::add_scaled_rows(table.data(), columns.data(), 20, rows.data(), b.data(),
                                    quotients.data(), primes);
             ASSERT_EQ(table, expected) << kernel << " lanes " << width;
+            // No terms and no rows at all (a reducer without a tail): the table is unchanged
+            // (the sanitizers of the debug and fuzz builds also see no null pointer offset).
+            lanes::add_scaled_rows(table.data(), columns.data(), 0, nullptr, b.data(),
+                                   quotients.data(), primes);
+            ASSERT_EQ(table, expected) << kernel << " lanes " << width;
             // Digits of any 32 bits, powers below p.
             std::vector<std::uint32_t> halves(6), powers(6 * width);
             random_residues(halves, false);
