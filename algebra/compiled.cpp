@@ -8,6 +8,7 @@
 
 #include "algebra/detail/double_double.h"
 #include "algebra/error.h"
+#include "algebra/exact_line_restriction.h"
 #include "algebra/flint_convert.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
@@ -16,18 +17,14 @@
 namespace locus::algebra {
 
 // The exact side, shared by all copies: the square-free polynomial in the ring x, y, z and its
-// FLINT form for composing with a ray (read-only after construction, so safe across threads).
+// integer form for restricting to a ray (read-only after construction, so safe across threads).
 struct CompiledPolynomial::Exact {
     Polynomial f;
     std::string equation;
-    std::unique_ptr<FlintContext> context;
-    std::unique_ptr<FlintPolynomial> flint_f;
+    detail::ExactLineRestriction on_line;
 
     explicit Exact(Polynomial polynomial)
-        : f(std::move(polynomial)),
-          equation(to_string(f)),
-          context(std::make_unique<FlintContext>(f.ring())),
-          flint_f(std::make_unique<FlintPolynomial>(to_fmpq_mpoly(f, *context))) {}
+        : f(std::move(polynomial)), equation(to_string(f)), on_line(f) {}
 };
 
 namespace {
@@ -360,54 +357,34 @@ CompiledPolynomial compile_surface(const Polynomial& f) {
 
 ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
                            const Point3& direction, double lo, double hi, bool lo_open) {
-    const CompiledPolynomial::Exact& exact = *f.exact_;
-    // The ray's coordinates o_i + t·d_i as exact univariate polynomials.
-    std::array<fmpq_poly_t, 3> line;
-    std::array<fmpq_poly_struct*, 3> line_pointers;
-    Rational value;
-    for (int axis = 0; axis < 3; ++axis) {
-        fmpq_poly_init(line[axis]);
-        set_exact_double(value.get(), origin[axis]);
-        fmpq_poly_set_coeff_fmpq(line[axis], 0, value.get());
-        set_exact_double(value.get(), direction[axis]);
-        fmpq_poly_set_coeff_fmpq(line[axis], 1, value.get());
-        line_pointers[axis] = line[axis];
-    }
-    fmpq_poly_t restriction, derivative, common;
-    fmpq_poly_init(restriction);
-    fmpq_poly_init(derivative);
-    fmpq_poly_init(common);
-    fmpq_mpoly_compose_fmpq_poly(restriction, exact.flint_f->get(), line_pointers.data(),
-                                 exact.context->get());
+    // F(t) = f(o + t·d) up to a positive factor, in integers (exact_line_restriction.h).
+    fmpz_poly_t restriction, derivative, common;
+    fmpz_poly_init(restriction);
+    fmpz_poly_init(derivative);
+    fmpz_poly_init(common);
+    f.exact_->on_line.restrict(origin, direction, restriction);
     ExactRoot result;
-    if (fmpq_poly_is_zero(restriction)) {
+    if (fmpz_poly_is_zero(restriction)) {
         result.status = ExactRoot::Status::identically_zero;
         result.t = lo;
     } else {
         // Square-free part F / gcd(F, F'): every distinct root, whatever its multiplicity.
-        fmpq_poly_derivative(derivative, restriction);
-        fmpq_poly_gcd(common, restriction, derivative);
-        fmpq_poly_div(restriction, restriction, common);
-        fmpz_poly_t integer_restriction;
-        fmpz_poly_init(integer_restriction);
-        fmpq_poly_get_numerator(integer_restriction, restriction);
+        fmpz_poly_derivative(derivative, restriction);
+        fmpz_poly_gcd(common, restriction, derivative);
+        fmpz_poly_div(restriction, restriction, common);
         Rational lo_exact, hi_exact;
         set_exact_double(lo_exact.get(), lo);
         set_exact_double(hi_exact.get(), hi);
         const std::optional<double> root =
-            first_real_root(integer_restriction, lo_exact.get(), hi_exact.get(), lo_open);
+            first_real_root(restriction, lo_exact.get(), hi_exact.get(), lo_open);
         if (root) {
             result.status = ExactRoot::Status::hit;
             result.t = *root;
         }
-        fmpz_poly_clear(integer_restriction);
     }
-    fmpq_poly_clear(restriction);
-    fmpq_poly_clear(derivative);
-    fmpq_poly_clear(common);
-    for (auto& l : line) {
-        fmpq_poly_clear(l);
-    }
+    fmpz_poly_clear(restriction);
+    fmpz_poly_clear(derivative);
+    fmpz_poly_clear(common);
     return result;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "algebra/exact_line_restriction.h"
 #include "algebra/rational.h"
 
 namespace locus::algebra {
@@ -196,20 +197,21 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
                                       bool lo_open) {
     Rational width;
     fmpq_sub(width.get(), hi, lo);
-    // q(s) = p(lo + width·s): the interval becomes [0, 1].
-    fmpq_poly_t pq, line, composed;
-    fmpq_poly_init(pq);
-    fmpq_poly_init(line);
-    fmpq_poly_init(composed);
-    fmpq_poly_set_fmpz_poly(pq, p);
-    fmpq_poly_set_coeff_fmpq(line, 0, lo);
-    fmpq_poly_set_coeff_fmpq(line, 1, width.get());
-    fmpq_poly_compose(composed, pq, line);
+    // q(s) ∝ p(lo + width·s) = p((lo_n·w_d + w_n·lo_d·s)/(lo_d·w_d)): the interval becomes [0, 1].
     IntPoly q;
-    fmpq_poly_get_numerator(q.p, composed);
-    fmpq_poly_clear(pq);
-    fmpq_poly_clear(line);
-    fmpq_poly_clear(composed);
+    {
+        fmpz_t a, b, d;
+        fmpz_init(a);
+        fmpz_init(b);
+        fmpz_init(d);
+        fmpz_mul(a, fmpq_numref(lo), fmpq_denref(width.get()));
+        fmpz_mul(b, fmpq_numref(width.get()), fmpq_denref(lo));
+        fmpz_mul(d, fmpq_denref(lo), fmpq_denref(width.get()));
+        detail::compose_with_line(q.p, p, a, b, d);
+        fmpz_clear(a);
+        fmpz_clear(b);
+        fmpz_clear(d);
+    }
     fmpz_poly_primitive_part(q.p, q.p);
 
     if (fmpz_poly_degree(q.p) <= 0) {
