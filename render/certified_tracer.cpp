@@ -297,8 +297,14 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     NeighbourHint& next = hint != nullptr ? *hint : unused;
     const NeighbourHint guess = next;
     next = NeighbourHint{};
+    next.family_failures = guess.family_failures;
     if (!(interval.hi > interval.lo)) {
+        next.family_rest = guess.family_rest;
         return miss(0);
+    }
+    if (guess.family_rest > 0) {
+        next.family_rest = guess.family_rest - 1;
+        return first_hit(ray, interval, tolerance);
     }
     // The interval is σ ∈ [s0, s_hi] of [t0, t0 + width].
     const double s0 = std::max(0.0, (interval.lo - t0) / width);
@@ -313,6 +319,12 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
         ball, kFamilyDepth, s0, s_hi, (guess.t - t0) / width, guess.reach / width);
     if (isolation.kind == Isolation::Kind::no_root) {
         return miss(isolation.work);
+    }
+    next.family_failures =
+        isolation.kind == Isolation::Kind::undecided ? guess.family_failures + 1 : 0;
+    if (next.family_failures == kFamilyFailuresBeforeRest) {
+        next.family_failures = 0;
+        next.family_rest = kFamilyRest;
     }
     if (isolation.kind == Isolation::Kind::undecided) {
         RootResult alone = first_hit(ray, interval, tolerance);

@@ -39,11 +39,19 @@ inline constexpr double kRenderTolerance = 1e-9;
 
 // What one primary ray's answer tells the next ray of its row: where its root was (NaN: no root)
 // and the half-width of the piece that isolated it. A guess only (isolate_first_root_near):
-// the next answer is certified all the same.
+// the next answer is certified all the same. And whether the family's balls have been deciding:
+// a family too blurred to decide anything (degree 30: radii far above F's values near its
+// roots) would cost every ray a fruitless search before it is traced alone, so after
+// kFamilyFailuresBeforeRest undecided rays in a row the next kFamilyRest rays of the row are
+// traced alone at once, and then the family is tried again (it may decide elsewhere).
 struct NeighbourHint {
     double t = std::numeric_limits<double>::quiet_NaN();
     double reach = 0.0;
+    int family_failures = 0;  // undecided rays in a row
+    int family_rest = 0;      // rays still to trace alone
 };
+inline constexpr int kFamilyFailuresBeforeRest = 8;
+inline constexpr int kFamilyRest = 32;
 
 class CertifiedTracer {
   public:

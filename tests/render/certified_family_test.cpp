@@ -148,6 +148,87 @@ INSTANTIATE_TEST_SUITE_P(Suite, GuidedSearch,
                          ::testing::Values("chmutov_octic", "endrass_octic", "torus",
                                            "kummer_quartic", "squared_sphere", "steiner_roman"));
 
+// A family too blurred to decide (as at degree 30) rests: after kFamilyFailuresBeforeRest
+// undecided rays of a row, the next kFamilyRest rays are traced alone without a search of the
+// ball, and then the ball is searched again. Every answer, searched or alone, keeps the contract.
+TEST(BlurredFamily, RestsAndEveryAnswerKeepsTheContract) {
+    const bench::SuiteSurface surface = suite_surface("chmutov_octic");
+    const algebra::CompiledPolynomial f = algebra::compile_surface(surface.equation);
+    const test::ExactRayOracle oracle(surface.equation);
+    const CertifiedTracer tracer(f);
+    const double radius = surface.clip_radius;
+    constexpr int kSize = 96;
+    const Camera camera(
+        {{0.3 * radius, 0.4 * radius, 3.0 * radius}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 35.0}, kSize,
+        kSize);
+    const CertifiedRayFamily family(f, camera, {0.0, 0.0, 0.0}, radius, {0.0, 0.0, kSize, kSize});
+    ASSERT_TRUE(family.certified());
+    const double t0 = family.t_start(), width = family.t_width();
+    auto row = std::make_unique<CertifiedRayFamily::Row>();
+    int traced = 0, searched = 0, rested = 0, rests_begun = 0;
+    for (const int j : {kSize / 2, kSize / 3}) {
+        const double y = j + 0.5;
+        family.expand_row(y, *row);
+        NeighbourHint neighbour;
+        for (int i = 0; i < kSize; ++i) {
+            const double x = i + 0.5;
+            const Ray ray = camera.ray(x, y);
+            const double a = glm::dot(ray.direction, ray.direction);
+            const double b = glm::dot(ray.origin, ray.direction);
+            const double c = glm::dot(ray.origin, ray.origin) - radius * radius;
+            const double discriminant = b * b - a * c;
+            if (!(discriminant > 0.0)) {
+                continue;
+            }
+            const double root = std::sqrt(discriminant);
+            const Interval interval{std::max(t0, (-b - root) / a),
+                                    std::min(t0 + width, (-b + root) / a)};
+            if (!(interval.hi > interval.lo)) {
+                continue;
+            }
+            BernsteinBall ball;
+            family.ball_at(*row, x, ball);
+            double largest = 0.0;
+            for (int k = 0; k <= ball.degree; ++k) {
+                largest = std::max(largest, std::abs(ball.b[k]));
+            }
+            for (int k = 0; k <= ball.degree; ++k) {
+                ball.r[k] += 1e3 * largest;  // still an enclosure, but one that decides nothing
+            }
+            const NeighbourHint before = neighbour;
+            const RootResult r =
+                tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance, &neighbour);
+            ++traced;
+            if (before.family_rest > 0) {
+                ++rested;
+                EXPECT_EQ(neighbour.family_rest, before.family_rest - 1);
+                EXPECT_EQ(neighbour.family_failures, before.family_failures);
+            } else {
+                ++searched;
+                if (before.family_failures + 1 == kFamilyFailuresBeforeRest) {
+                    ++rests_begun;
+                    EXPECT_EQ(neighbour.family_rest, kFamilyRest);
+                    EXPECT_EQ(neighbour.family_failures, 0);
+                } else {
+                    EXPECT_EQ(neighbour.family_failures, before.family_failures + 1);
+                }
+            }
+            ASSERT_NE(r.status, RootStatus::unknown);
+            const test::ExactRayOracle::Restriction exact =
+                oracle.restrict(to_point(ray.origin), to_point(ray.direction));
+            EXPECT_TRUE(test::ExactRayOracle::is_right(exact, interval.lo, interval.hi,
+                                                       r.status == RootStatus::hit, r.t,
+                                                       kRenderTolerance))
+                << "pixel " << i << ' ' << j;
+        }
+    }
+    // Both rows are long enough for a rest and a second try of the family after it.
+    EXPECT_GE(rests_begun, 3);
+    EXPECT_GT(rested, 2 * kFamilyRest);
+    EXPECT_GT(searched, 2 * kFamilyFailuresBeforeRest);
+    EXPECT_EQ(traced, rested + searched);
+}
+
 // De Casteljau may write a piece over the ball it splits (the isolation's stack relies on it).
 TEST(BernsteinSplit, MayWriteOverItsInput) {
     std::mt19937_64 random(7);
