@@ -2,6 +2,7 @@
 
 #include <flint/fmpq_poly.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -144,51 +145,167 @@ void s_from_piece(fmpq_t s, const fmpz_t c, ulong k, const fmpq_t x) {
     fmpq_div_2exp(s, s, k);
 }
 
-// Refines the single root of `poly` in (0, 1) (a sign change) by exact bisection until its
-// enclosure in t rounds to one or two adjacent doubles.
+// 2^(j·n)·p(m/2^j) for p of degree n: the value of p at the dyadic m/2^j times a positive
+// power of two, in integers (Horner's scheme; FLINT's evaluation at a rational reduces every
+// partial sum by a gcd).
+void scaled_value_at(fmpz_t out, const fmpz_poly_t p, const fmpz_t m, ulong j, fmpz_t scratch) {
+    const slong n = fmpz_poly_degree(p);
+    fmpz_set(out, p->coeffs + n);
+    for (slong i = n - 1; i >= 0; --i) {
+        fmpz_mul(out, out, m);
+        fmpz_mul_2exp(scratch, p->coeffs + i, j * static_cast<ulong>(n - i));
+        fmpz_add(out, out, scratch);
+    }
+}
+
+// An integer times 2^shift as a double mantissa and a wide exponent, for the secant's
+// proposals (which need no more than a few correct bits).
+struct Magnitude {
+    double mantissa = 0.0;  // signed, 0.5 ≤ |mantissa| < 1, or 0
+    slong exponent = 0;
+};
+
+Magnitude magnitude_of(const fmpz_t v, slong shift) {
+    Magnitude m;
+    if (!fmpz_is_zero(v)) {
+        m.mantissa = fmpz_get_d_2exp(&m.exponent, v);
+        m.exponent += shift;
+    }
+    return m;
+}
+
+// fa/(fa − fb) for values of opposite signs: where the secant through them crosses zero, as a
+// fraction of the way from a to b.
+double secant_fraction(const Magnitude& fa, const Magnitude& fb) {
+    // fb/fa = (mb/ma)·2^(eb − ea) ≤ 0; r = 1/(1 − fb/fa).
+    const slong gap = std::clamp<slong>(fb.exponent - fa.exponent, -1100, 1100);
+    const double ratio = std::ldexp(fb.mantissa / fa.mantissa, static_cast<int>(gap));
+    return 1.0 / (1.0 - ratio);
+}
+
+// Refines the single root of `poly` in (0, 1) (a sign change) until its enclosure in t rounds
+// to one or two adjacent doubles. The enclosure [A, B]/2^J shrinks by exact signs at dyadic
+// points: the Illinois variant of regula falsi proposes them (superlinear near a simple root),
+// and a step that does not halve the enclosure is followed by a bisection, so the enclosure at
+// least halves every two steps whatever the secant does.
 double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
               const fmpq_t width) {
-    Rational a, b, mid, value, s, t_lower, t_upper;
-    fmpq_zero(a.get());
-    fmpq_one(b.get());
-    fmpz_poly_evaluate_fmpq(value.get(), poly, a.get());
-    const int sign_at_a = fmpq_sgn(value.get());
-    for (int iteration = 0; iteration < 4000; ++iteration) {
-        s_from_piece(s.get(), c, k, a.get());
-        t_from_s(t_lower.get(), s.get(), lo, width);
-        s_from_piece(s.get(), c, k, b.get());
-        t_from_s(t_upper.get(), s.get(), lo, width);
-        const double lower = nearest_double(t_lower.get());
-        const double upper = nearest_double(t_upper.get());
-        // Done when both ends round to the same double, or (a root on a rounding boundary)
-        // when the enclosure is far below one ulp.
-        fmpq_sub(mid.get(), t_upper.get(), t_lower.get());
-        const double gap = std::nextafter(std::abs(lower), INFINITY) - std::abs(lower);
-        if (lower == upper || std::abs(fmpq_get_d(mid.get())) < gap / 256) {
-            fmpq_add(mid.get(), t_lower.get(), t_upper.get());
-            fmpq_div_2exp(mid.get(), mid.get(), 1);
-            return nearest_double(mid.get());
+    const slong n = fmpz_poly_degree(poly);
+    fmpz_t a, b, x, value, scratch, gap_width;
+    fmpz_init(a);
+    fmpz_init_set_ui(b, 1);
+    fmpz_init(x);
+    fmpz_init(value);
+    fmpz_init(scratch);
+    fmpz_init(gap_width);
+    ulong level = 0;  // the enclosure is [a, b]/2^level
+    scaled_value_at(value, poly, a, 0, scratch);
+    const int sign_at_a = fmpz_sgn(value);
+    Magnitude fa = magnitude_of(value, 0);
+    scaled_value_at(value, poly, b, 0, scratch);
+    Magnitude fb = magnitude_of(value, 0);
+    int last_kept = 0;  // −1: a was kept by the last step, +1: b, 0: a bisection
+    bool bisect_next = sign_at_a == 0 || fb.mantissa == 0.0;
+    const double width_d = std::abs(fmpq_get_d(width));
+    const double lo_d = fmpq_get_d(lo);
+    Rational x_q, s, t_lower, t_upper, mid;
+    const auto t_of = [&](const fmpz_t numerator, fmpq_t t) {
+        fmpz_one(scratch);
+        fmpz_mul_2exp(scratch, scratch, level);
+        fmpq_set_fmpz_frac(x_q.get(), numerator, scratch);
+        s_from_piece(s.get(), c, k, x_q.get());
+        t_from_s(t, s.get(), lo, width);
+    };
+    double result = NAN;
+    for (int iteration = 0; iteration < 4000 && std::isnan(result); ++iteration) {
+        // Close to one ulp by the doubles' estimate: the exact test of the old bisection.
+        fmpz_sub(gap_width, b, a);
+        slong e = 0;
+        const double span = fmpz_get_d_2exp(&e, gap_width);
+        const double t_span =
+            std::ldexp(span * width_d,
+                       static_cast<int>(std::max<slong>(e - static_cast<slong>(level + k), -4000)));
+        // The ends' t in doubles (x = a/2^level, s = (c + x)/2^k), for the size of their ulp.
+        const auto t_estimate = [&](const fmpz_t end) {
+            slong end_exponent = 0;
+            const double mantissa = fmpz_get_d_2exp(&end_exponent, end);
+            const double x_d = std::ldexp(
+                mantissa,
+                static_cast<int>(std::max<slong>(end_exponent - static_cast<slong>(level), -4000)));
+            return std::abs(lo_d + width_d * std::ldexp(fmpz_get_d(c) + x_d, -static_cast<int>(k)));
+        };
+        const double largest = std::max(t_estimate(a), t_estimate(b));
+        const double ulp = std::nextafter(largest, INFINITY) - largest;
+        if (!(t_span > 8.0 * ulp) || iteration % 64 == 63 || iteration + 1 == 4000) {
+            t_of(a, t_lower.get());
+            t_of(b, t_upper.get());
+            const double lower = nearest_double(t_lower.get());
+            const double upper = nearest_double(t_upper.get());
+            fmpq_sub(mid.get(), t_upper.get(), t_lower.get());
+            const double gap = std::nextafter(std::abs(lower), INFINITY) - std::abs(lower);
+            if (lower == upper || std::abs(fmpq_get_d(mid.get())) < gap / 256 ||
+                iteration + 1 == 4000) {
+                fmpq_add(mid.get(), t_lower.get(), t_upper.get());
+                fmpq_div_2exp(mid.get(), mid.get(), 1);
+                result = nearest_double(mid.get());
+                break;
+            }
         }
-        fmpq_add(mid.get(), a.get(), b.get());
-        fmpq_div_2exp(mid.get(), mid.get(), 1);
-        fmpz_poly_evaluate_fmpq(value.get(), poly, mid.get());
-        const int sign_at_mid = fmpq_sgn(value.get());
-        if (sign_at_mid == 0) {
-            s_from_piece(s.get(), c, k, mid.get());
-            t_from_s(t_lower.get(), s.get(), lo, width);
-            return nearest_double(t_lower.get());
+        // The next point: the secant's (at 2^-32 resolution within the enclosure), or the middle.
+        constexpr ulong kSecantBits = 32;
+        ulong bits = 1;
+        double fraction = 0.5;
+        if (!bisect_next) {
+            fraction = secant_fraction(fa, fb);
+            if (std::isfinite(fraction) && fraction > 0.0 && fraction < 1.0) {
+                bits = kSecantBits;
+            } else {
+                fraction = 0.5;
+            }
         }
-        if (sign_at_mid == sign_at_a) {
-            fmpq_set(a.get(), mid.get());
+        const double steps = std::ldexp(1.0, static_cast<int>(bits));
+        const double chosen = std::clamp(std::round(fraction * steps), 1.0, steps - 1.0);
+        fmpz_mul_2exp(a, a, bits);
+        fmpz_mul_2exp(b, b, bits);
+        level += bits;
+        fmpz_sub(x, b, a);
+        fmpz_mul_ui(x, x, static_cast<ulong>(chosen));
+        fmpz_tdiv_q_2exp(x, x, bits);
+        fmpz_add(x, x, a);
+        // x = a + (b − a)·chosen/2^bits exactly, since b − a is a multiple of 2^bits now.
+        scaled_value_at(value, poly, x, level, scratch);
+        const int sign_at_x = fmpz_sgn(value);
+        if (sign_at_x == 0) {
+            t_of(x, t_lower.get());
+            result = nearest_double(t_lower.get());
+            break;
+        }
+        const Magnitude fx = magnitude_of(value, -static_cast<slong>(level) * n);
+        const double kept_fraction = sign_at_x == sign_at_a ? 1.0 - chosen / steps : chosen / steps;
+        if (sign_at_x == sign_at_a) {
+            fmpz_swap(a, x);
+            fa = fx;
+            if (last_kept == 1) {
+                fb.exponent -= 1;  // Illinois: b kept twice, its value halved
+            }
+            last_kept = bits == 1 ? 0 : 1;
         } else {
-            fmpq_set(b.get(), mid.get());
+            fmpz_swap(b, x);
+            fb = fx;
+            if (last_kept == -1) {
+                fa.exponent -= 1;
+            }
+            last_kept = bits == 1 ? 0 : -1;
         }
+        bisect_next = bits != 1 && kept_fraction > 0.5;
     }
-    // Unreachable for finite doubles: each step halves the enclosure, and 4000 halvings take
-    // any interval of doubles below one ulp.
-    s_from_piece(s.get(), c, k, a.get());
-    t_from_s(t_lower.get(), s.get(), lo, width);
-    return nearest_double(t_lower.get());
+    fmpz_clear(a);
+    fmpz_clear(b);
+    fmpz_clear(x);
+    fmpz_clear(value);
+    fmpz_clear(scratch);
+    fmpz_clear(gap_width);
+    return result;
 }
 
 }  // namespace

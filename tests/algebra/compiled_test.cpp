@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "algebra/error.h"
 #include "algebra/parse.h"
@@ -180,6 +184,103 @@ TEST(FirstRealRoot, Wilkinson) {
     fmpq_clear(hi);
     fmpz_poly_clear(p);
     fmpz_poly_clear(factor);
+}
+
+// The refinement (regula falsi with bisection, exact signs at dyadic points) on roots nobody
+// placed: random products of linear factors b·t − a and of t² − m, at every scale from 2^-40 to
+// 2^40. The first root in [lo, hi] is known exactly — a rational a/b, whose nearest double
+// nearest_double computes, or ±√m·2^e, which IEEE's correctly rounded square root gives — and
+// the answer must be that double (a root on a rounding boundary may give either neighbour).
+TEST(FirstRealRoot, RandomRootsAreFoundToTheNearestDouble) {
+    std::mt19937_64 random(1127);
+    std::uniform_int_distribution<long> numerator(-100000, 100000), denominator(1, 5000);
+    std::uniform_int_distribution<int> scale_exponent(-40, 40), count(1, 7);
+    int exact = 0, trials = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const int e = scale_exponent(random);
+        fmpz_poly_t p, factor;
+        fmpz_poly_init(p);
+        fmpz_poly_init(factor);
+        fmpz_poly_one(p);
+        std::vector<double> roots;  // as doubles, nearest to the exact roots
+        Rational root, scale;
+        // Roots r·2^e: the factor (b·t − a·2^e) for e ≥ 0, (2^−e·b·t − a) otherwise.
+        fmpz_t a, b;
+        fmpz_init(a);
+        fmpz_init(b);
+        for (int k = count(random); k > 0; --k) {
+            fmpz_set_si(a, numerator(random));
+            fmpz_set_si(b, denominator(random));
+            if (e >= 0) {
+                fmpz_mul_2exp(a, a, static_cast<ulong>(e));
+            } else {
+                fmpz_mul_2exp(b, b, static_cast<ulong>(-e));
+            }
+            fmpz_poly_zero(factor);
+            fmpz_poly_set_coeff_fmpz(factor, 1, b);
+            fmpz_neg(a, a);
+            fmpz_poly_set_coeff_fmpz(factor, 0, a);
+            fmpz_neg(a, a);
+            fmpq_set_fmpz_frac(root.get(), a, b);
+            roots.push_back(nearest_double(root.get()));
+            fmpz_poly_mul(p, p, factor);
+        }
+        // t² − m·4^e', roots ±√m·2^e' (m = 2, 3, 5, ... not a square).
+        const long m = std::array<long, 5>{2, 3, 5, 7, 11}[static_cast<std::size_t>(trial % 5)];
+        const int half = e / 2;
+        fmpz_poly_zero(factor);
+        if (half >= 0) {
+            fmpz_poly_set_coeff_si(factor, 2, 1);
+            fmpz_set_si(a, -m);
+            fmpz_mul_2exp(a, a, static_cast<ulong>(2 * half));
+            fmpz_poly_set_coeff_fmpz(factor, 0, a);
+        } else {
+            fmpz_one(a);
+            fmpz_mul_2exp(a, a, static_cast<ulong>(-2 * half));
+            fmpz_poly_set_coeff_fmpz(factor, 2, a);
+            fmpz_poly_set_coeff_si(factor, 0, -m);
+        }
+        fmpz_poly_mul(p, p, factor);
+        roots.push_back(std::ldexp(std::sqrt(static_cast<double>(m)), half));
+        roots.push_back(-roots.back());
+        // Square-free: equal random linear roots would repeat.
+        fmpz_poly_t derivative, common;
+        fmpz_poly_init(derivative);
+        fmpz_poly_init(common);
+        fmpz_poly_derivative(derivative, p);
+        fmpz_poly_gcd(common, p, derivative);
+        fmpz_poly_div(p, p, common);
+        fmpz_poly_clear(derivative);
+        fmpz_poly_clear(common);
+        std::sort(roots.begin(), roots.end());
+        roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+        // An interval from a random point below the smallest root to past the largest.
+        const double low = std::ldexp(-2.0e5, std::max(e, 0)) * (1.0 + 0.001 * (trial % 7));
+        const double high = std::ldexp(2.0e5, std::max(e, 0)) + 1.0;
+        const std::size_t skip = static_cast<std::size_t>(trial) % roots.size();
+        const double from = skip == 0 ? low : 0.5 * (roots[skip - 1] + roots[skip]);
+        fmpq_t lo, hi;
+        fmpq_init(lo);
+        fmpq_init(hi);
+        set_exact_double(lo, from);
+        set_exact_double(hi, high);
+        const std::optional<double> found = first_real_root(p, lo, hi, false);
+        ASSERT_TRUE(found.has_value()) << "trial " << trial;
+        const double expected = roots[skip];
+        const double gap = std::nextafter(std::abs(expected), INFINITY) - std::abs(expected);
+        EXPECT_LE(std::abs(*found - expected), gap)
+            << "trial " << trial << ": " << *found << " for " << expected;
+        exact += *found == expected ? 1 : 0;
+        ++trials;
+        fmpq_clear(lo);
+        fmpq_clear(hi);
+        fmpz_clear(a);
+        fmpz_clear(b);
+        fmpz_poly_clear(p);
+        fmpz_poly_clear(factor);
+    }
+    // Boundary cases are rare: nearly every answer is the nearest double itself.
+    EXPECT_GE(exact, trials - 3);
 }
 
 }  // namespace
