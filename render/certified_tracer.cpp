@@ -272,13 +272,26 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
                               t_at(isolation.hi), margin};
             return narrow(ray, piece, tolerance, work);
         }
-        // Undecided: a root at the very start (a ray starting on the surface) or a cluster of
-        // roots goes to the exact method; otherwise the piece is expanded again.
-        if (isolation.lo == 0.0 && a == lo && ball.sign(0) == 0) {
-            return exact(ray, interval, work);
-        }
         const double piece_a = std::max(a, t_at(isolation.lo) - margin);
         const double piece_b = std::min(b, t_at(isolation.hi) + margin);
+        // Undecided at the very start: F(lo) may be zero (a ray starting on the surface, or
+        // the surface crossing the clip sphere where the ray enters it), which no ball can
+        // tell. Exact arithmetic decides the undecided piece alone — a short interval, with
+        // few roots to isolate — and the search goes on past it when it holds none.
+        if (isolation.lo == 0.0 && a == lo && ball.sign(0) == 0) {
+            if (!(piece_b > lo && piece_b < hi)) {
+                return exact(ray, interval, work);
+            }
+            const RootResult near_start = exact(ray, {lo, piece_b}, work);
+            if (near_start.status == RootStatus::hit) {
+                return near_start;
+            }
+            work = near_start.work;
+            stack[top++] = {piece_b, b};
+            continue;
+        }
+        // Undecided elsewhere: a cluster of roots goes to the exact method; otherwise the piece
+        // is expanded again.
         if (!(piece_b - piece_a < 0.5 * (b - a)) || top + 2 > static_cast<int>(stack.size())) {
             return exact(ray, interval, work);
         }

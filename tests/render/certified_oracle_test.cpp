@@ -340,6 +340,45 @@ TEST(OracleRaySet, HoldsAtLeastTenThousandRays) {
     EXPECT_GE(total, 10000u);
 }
 
+// Rays that start exactly on the surface and leave it at a grazing angle, inward by ε from
+// 10^-1 to 10^-12: F(0) = 0, which no ball decides, so exact arithmetic settles the first
+// undecided piece alone and the search goes on past it when the next root lies beyond — or
+// finds it there when the root is within the piece (ε small). Every answer against the oracle.
+TEST(OracleRays, GrazingRaysFromTheSurfaceFindTheNextRoot) {
+    struct Start {
+        const char* equation;
+        Point point, tangent, inward;
+    };
+    const std::array<Start, 3> starts{{
+        {"x^2+y^2+z^2-1", {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {-1.0, 0.0, 0.0}},
+        {"(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {3.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {-1.0, 0.0, 0.0}},
+        {"x^4-5*x^2*y^2+y^4+z^2-1", {1.0, 0.0, 0.0}, {0.0, 0.6, 0.8}, {-1.0, 0.0, 0.0}},
+    }};
+    int checked = 0;
+    for (const Start& start : starts) {
+        const algebra::CompiledPolynomial f = algebra::compile_surface(start.equation);
+        const test::ExactRayOracle oracle(start.equation);
+        const SurfaceTracer tracer(f, TraceMethod::certified, 4.0);
+        for (int k = 1; k <= 12; ++k) {
+            const double epsilon = std::pow(10.0, -k);
+            for (const double sign : {1.0, -1.0}) {
+                const Point d{start.tangent[0] + sign * epsilon * start.inward[0],
+                              start.tangent[1] + epsilon * start.inward[1],
+                              start.tangent[2] + epsilon * start.inward[2]};
+                const RootResult r = tracer.first_hit({to_vec(start.point), to_vec(d)}, {0.0, 6.0});
+                ASSERT_NE(r.status, RootStatus::unknown) << start.equation << ", ε " << epsilon;
+                EXPECT_TRUE(test::ExactRayOracle::is_right(oracle.restrict(start.point, d), 6.0,
+                                                           r.status == RootStatus::hit, r.t,
+                                                           kTraceTolerance))
+                    << start.equation << ", ε " << epsilon << " sign " << sign << ": answered "
+                    << (r.status == RootStatus::hit ? std::to_string(r.t) : "miss");
+                ++checked;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 72);
+}
+
 // The oracle itself, on closed forms: it must be right for the tests above to mean anything.
 TEST(ExactRayOracle, AgreesWithClosedForms) {
     const test::ExactRayOracle sphere("x^2+y^2+z^2-1");
