@@ -6,7 +6,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "algebra/detail/double_double.h"
+#include "algebra/double_double.h"
 #include "algebra/error.h"
 #include "algebra/exact_line_restriction.h"
 #include "algebra/flint_convert.h"
@@ -285,18 +285,17 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
         }
         return result;
     }
-    using detail::DoubleDouble;
     // The point's coordinates o_i + t·d_i, each within kOperationError of exact (one accurate
     // double-double sum of exact parts), their magnitudes rounded up, and the power tables of
     // both: the values in double-double, the magnitudes in double for the error bound.
     std::array<DoubleDouble, 3> point;
     std::array<double, 3> magnitude;
     for (int axis = 0; axis < 3; ++axis) {
-        point[axis] = detail::from_double(origin[axis]) + detail::two_product(t, direction[axis]);
+        point[axis] = from_double(origin[axis]) + two_product(t, direction[axis]);
         magnitude[axis] = std::abs(point[axis].hi) * (1.0 + 0x1.0p-51);
     }
     PowerTables<DoubleDouble> powers;
-    powers.fill(point, magnitude, detail::from_double(1.0), degree_);
+    powers.fill(point, magnitude, from_double(1.0), degree_);
     const auto& [xs, ys, zs, axs, ays, azs] = powers;
     DoubleDouble sum;
     double scale = 0.0;  // Σ |c̃|·|x|^a|y|^b|z|^c, up to the rounding of its own evaluation
@@ -317,7 +316,7 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
     // (1 + 4(N + degree)u) covers them, and the last term covers underflow (each operation may
     // lose 2^-1074 when its result is subnormal).
     const double n = double_double_depth_;
-    const double gamma = n * detail::kOperationError / (1.0 - n * detail::kOperationError);
+    const double gamma = n * kOperationError / (1.0 - n * kOperationError);
     const double bound_of_scale = scale * (1.0 + 4.0 * (n + degree_) * 0x1.0p-53);
     ValueEnclosure result;
     result.value = sum.hi;

@@ -91,6 +91,11 @@ class CompiledPolynomial {
     // 2^-53 otherwise, and +∞ when a coefficient left the range of normal doubles (so that no
     // floating-point bound built on the doubles can be trusted).
     double coefficient_error() const { return coefficient_error_; }
+    // The coefficients as double-doubles: terms()[i].coefficient + low_words()[i], within
+    // double_double_coefficient_error() (relative) of the exact ones — for restrictions to a
+    // ray in double-double (render/ray_restriction.h).
+    std::span<const double> low_words() const { return low_words_; }
+    double double_double_coefficient_error() const { return double_double_coefficient_error_; }
 
   private:
     struct Exact;
@@ -142,9 +147,10 @@ CompiledPolynomial compile_surface(const Polynomial& f);
 // The certified first root of F(t) = f(o + t·d) with lo ≤ t ≤ hi, where o, d, lo, hi are read
 // exactly as the rationals their doubles denote. F is computed in integers (up to a positive
 // factor: exact_line_restriction.h), made square-free, and its roots isolated by Descartes'
-// rule with bisection (Collins–Akritas); the first one is refined by exact bisection until its enclosure rounds to one or two adjacent doubles, so `t` is
-// within one ulp of the true root. Roots of every multiplicity count. With `lo_open`, a root at
-// exactly lo is skipped (`locus trace` asks for t > 0).
+// rule with bisection (Collins–Akritas); the first one is refined by exact bisection until its
+// enclosure rounds to one or two adjacent doubles, so `t` is within one ulp of the true root. Roots
+// of every multiplicity count. With `lo_open`, a root at exactly lo is skipped (`locus trace` asks
+// for t > 0).
 ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
                            const Point3& direction, double lo, double hi, bool lo_open = false);
 

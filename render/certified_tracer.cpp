@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "algebra/double_double.h"
 #include "render/certified_isolation.h"
 
 namespace locus::render {
@@ -59,7 +60,7 @@ struct CertifiedTracer::Piece {
 };
 
 CertifiedTracer::CertifiedTracer(const algebra::CompiledPolynomial& f)
-    : f_(&f), restrictor_(f.terms()), coefficient_error_(f.coefficient_error()) {}
+    : f_(&f), restrictor_(f.terms(), f.low_words()), coefficient_error_(f.coefficient_error()) {}
 
 RestrictionBall CertifiedTracer::segment_ball(const Ray& ray, double a, double b) const {
     // The segment [a, b] about its middle, x ∈ [−1, 1]: the exact line is
@@ -78,6 +79,33 @@ RestrictionBall CertifiedTracer::segment_ball(const Ray& ray, double a, double b
                           std::abs(middle[i]) * (1.01 * kUnit) + kTiny;
     }
     return restrictor_.restrict_with_bounds(middle, half, error, coefficient_error_);
+}
+
+RestrictionBall CertifiedTracer::segment_ball_precise(const Ray& ray, double a, double b) const {
+    // The same line in double-double: b − a exactly (TwoSum, halved exactly), a·d exactly
+    // (TwoProduct), then the start o + a·d, the half-width h and the middle m = start + h, each
+    // a double-double operation within 5u² of its result (u = 2^-53).
+    using algebra::DoubleDouble;
+    const DoubleDouble width = algebra::two_sum(b, -a);
+    const DoubleDouble half_width{0.5 * width.hi, 0.5 * width.lo};
+    constexpr double kError = algebra::kOperationError * (1.0 + 0x1.0p-50);
+    DoubleDoubleLine line;
+    LineError error;
+    for (int i = 0; i < 3; ++i) {
+        const DoubleDouble start =
+            algebra::from_double(ray.origin[i]) + algebra::two_product(a, ray.direction[i]);
+        const DoubleDouble half = half_width * algebra::from_double(ray.direction[i]);
+        const DoubleDouble middle = start + half;
+        line.origin_hi[i] = middle.hi;
+        line.origin_lo[i] = middle.lo;
+        line.direction_hi[i] = half.hi;
+        line.direction_lo[i] = half.lo;
+        error.direction[i] = kError * std::abs(half.hi) + kTiny;
+        error.origin[i] =
+            kError * (std::abs(start.hi) + std::abs(half.hi) + std::abs(middle.hi)) + 3.0 * kTiny;
+    }
+    return restrictor_.restrict_with_double_double_bounds(line, error,
+                                                          f_->double_double_coefficient_error());
 }
 
 RootResult CertifiedTracer::exact(const Ray& ray, Interval interval, int work) const {
@@ -220,12 +248,14 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
         r.reason = "a ray or interval that is not finite";
         return r;
     }
+    // `precise`: restricted in double-double, for pieces doubles could not decide.
     struct Segment {
         double a, b;
+        bool precise = false;
     };
     std::array<Segment, kMaxSegments + 2> stack;
     int top = 0;
-    stack[top++] = {lo, hi};
+    stack[top++] = {lo, hi, false};
     int work = 0;
     int segments = 0;
     while (top > 0) {
@@ -234,7 +264,8 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
             return exact(ray, interval, work);
         }
         const double a = segment.a, b = segment.b;
-        const RestrictionBall power = segment_ball(ray, a, b);
+        const RestrictionBall power =
+            segment.precise ? segment_ball_precise(ray, a, b) : segment_ball(ray, a, b);
         if (!power.certified) {
             // Overflow over a very long segment: bound the roots first (Cauchy's bound on the
             // restriction about a, when its leading coefficient is certainly not zero).
@@ -251,7 +282,7 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
                     }
                     const double reach = (1.0 + largest / lead) * (1.0 + 1e-9) + 1.0;
                     if (std::isfinite(reach) && a + reach < b) {
-                        stack[top++] = {a, a + reach};
+                        stack[top++] = {a, a + reach, false};
                         ++work;
                         continue;
                     }
@@ -274,31 +305,45 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
         }
         const double piece_a = std::max(a, t_at(isolation.lo) - margin);
         const double piece_b = std::min(b, t_at(isolation.hi) + margin);
+        const double rest_a = std::max(a, t_at(isolation.hi) - margin);
+        if (top + 2 > static_cast<int>(stack.size())) {
+            return exact(ray, interval, work);
+        }
         // Undecided at the very start: F(lo) may be zero (a ray starting on the surface, or
-        // the surface crossing the clip sphere where the ray enters it), which no ball can
-        // tell. Exact arithmetic decides the undecided piece alone — a short interval, with
-        // few roots to isolate — and the search goes on past it when it holds none.
+        // the surface crossing the clip sphere where the ray enters it), or smaller than the
+        // doubles' radii (degree 30). The undecided piece is expanded again in double-double;
+        // what that cannot decide either, exact arithmetic decides on the piece alone — a short
+        // interval, with few roots to isolate — and the search goes on past it when it holds
+        // none.
         if (isolation.lo == 0.0 && a == lo && ball.sign(0) == 0) {
             if (!(piece_b > lo && piece_b < hi)) {
                 return exact(ray, interval, work);
+            }
+            if (!segment.precise) {
+                stack[top++] = {piece_b, b, false};
+                stack[top++] = {lo, piece_b, true};
+                continue;
             }
             const RootResult near_start = exact(ray, {lo, piece_b}, work);
             if (near_start.status == RootStatus::hit) {
                 return near_start;
             }
             work = near_start.work;
-            stack[top++] = {piece_b, b};
+            stack[top++] = {piece_b, b, true};
             continue;
         }
-        // Undecided elsewhere: a cluster of roots goes to the exact method; otherwise the piece
-        // is expanded again.
-        if (!(piece_b - piece_a < 0.5 * (b - a)) || top + 2 > static_cast<int>(stack.size())) {
+        // Undecided elsewhere: a piece less than half the segment is expanded again about
+        // itself, where its terms are smaller; one that is not (a cluster of roots, or radii
+        // above F's values throughout) is expanded again in double-double, and what that
+        // cannot decide goes to exact arithmetic.
+        const bool shrinks = piece_b - piece_a < 0.5 * (b - a);
+        if (!shrinks && segment.precise) {
             return exact(ray, interval, work);
         }
         if (isolation.hi < 1.0) {
-            stack[top++] = {std::max(a, t_at(isolation.hi) - margin), b};
+            stack[top++] = {rest_a, b, segment.precise};
         }
-        stack[top++] = {piece_a, piece_b};
+        stack[top++] = {piece_a, piece_b, segment.precise || !shrinks};
     }
     return miss(work);
 }

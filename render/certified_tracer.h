@@ -75,6 +75,8 @@ class CertifiedTracer {
   private:
     struct Piece;
     RestrictionBall segment_ball(const Ray& ray, double a, double b) const;
+    // The same in double-double (LineRestrictor::restrict_with_double_double_bounds).
+    RestrictionBall segment_ball_precise(const Ray& ray, double a, double b) const;
     RootResult narrow(const Ray& ray, const Piece& piece, double tolerance, int work) const;
     RootResult exact(const Ray& ray, Interval interval, int work) const;
 

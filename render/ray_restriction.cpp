@@ -4,13 +4,17 @@
 #include <cmath>
 #include <map>
 
+#include "algebra/double_double.h"
+
 namespace locus::render {
 
-LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms) {
+LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
+                               std::span<const double> low_words) {
     std::map<int, std::map<int, std::vector<ZTerm>>> grouped;
-    for (const algebra::CompiledTerm& term : terms) {
-        grouped[term.ex][term.ey].push_back(
-            {term.ez, term.coefficient, std::abs(term.coefficient)});
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+        const algebra::CompiledTerm& term = terms[i];
+        grouped[term.ex][term.ey].push_back({term.ez, term.coefficient, std::abs(term.coefficient),
+                                             i < low_words.size() ? low_words[i] : 0.0});
         degree_ = std::max(degree_, term.ex + term.ey + term.ez);
         max_exponent_ = std::max({max_exponent_, term.ex, term.ey, term.ez});
     }
@@ -46,7 +50,6 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms) {
 
 namespace {
 constexpr double kUnit = 0x1.0p-53;
-}  // namespace
 
 // The scalars of LineRestrictor::expand. `Plain` is a double. `Ball` is a double with a bound
 // on its error, propagated by the running error analysis of each operation (midpoint-radius
@@ -59,7 +62,6 @@ struct Plain {
     double v;
     static Plain zero() { return {0.0}; }
     static Plain one() { return {1.0}; }
-    static Plain of(double value, double) { return {value}; }
     friend Plain operator*(const Plain& a, const Plain& b) { return {a.v * b.v}; }
     // acc + a·b
     static void multiply_add(Plain& acc, const Plain& a, const Plain& b) { acc.v += a.v * b.v; }
@@ -72,7 +74,6 @@ struct Ball {
     double v, r;
     static Ball zero() { return {0.0, 0.0}; }
     static Ball one() { return {1.0, 0.0}; }
-    static Ball of(double value, double radius) { return {value, radius}; }
     friend Ball operator*(const Ball& a, const Ball& b) {
         const double p = a.v * b.v;
         return {p, std::abs(a.v) * b.r + (std::abs(b.v) + b.r) * a.r + kUnit * std::abs(p)};
@@ -90,11 +91,52 @@ struct Ball {
     }
 };
 
+// `DoubleDoubleBall`: the same running error analysis with double-double midpoints, each
+// operation's error at most algebra::kOperationError (5u²) of its result's magnitude. A
+// double-double's magnitude |hi + lo| is taken as |hi|·(1 + 2^-52), above it.
+struct DoubleDoubleBall {
+    algebra::DoubleDouble v;
+    double r;
+    static DoubleDoubleBall zero() { return {{0.0, 0.0}, 0.0}; }
+    static DoubleDoubleBall one() { return {{1.0, 0.0}, 0.0}; }
+    static double magnitude(const algebra::DoubleDouble& x) {
+        return std::abs(x.hi) * (1.0 + 0x1.0p-52);
+    }
+    friend DoubleDoubleBall operator*(const DoubleDoubleBall& a, const DoubleDoubleBall& b) {
+        const algebra::DoubleDouble p = a.v * b.v;
+        return {p, magnitude(a.v) * b.r + (magnitude(b.v) + b.r) * a.r +
+                       algebra::kOperationError * magnitude(p)};
+    }
+    static void multiply_add(DoubleDoubleBall& acc, const DoubleDoubleBall& a,
+                             const DoubleDoubleBall& b) {
+        const algebra::DoubleDouble p = a.v * b.v;
+        acc.v = acc.v + p;
+        acc.r += magnitude(a.v) * b.r + (magnitude(b.v) + b.r) * a.r +
+                 algebra::kOperationError * (magnitude(p) + magnitude(acc.v));
+    }
+    static DoubleDoubleBall sum_of_products(const DoubleDoubleBall& a, const DoubleDoubleBall& b,
+                                            const DoubleDoubleBall& c, const DoubleDoubleBall& d) {
+        DoubleDoubleBall z = a * b;
+        multiply_add(z, c, d);
+        return z;
+    }
+};
+
+// The balls of a line's coordinates: value ± error, componentwise.
+std::array<Ball, 3> balls(const Vec3& value, const Vec3& error) {
+    return {Ball{value[0], error[0]}, Ball{value[1], error[1]}, Ball{value[2], error[2]}};
+}
+
+}  // namespace
+
 RayPolynomial LineRestrictor::restrict_to(const Vec3& origin, const Vec3& direction) const {
     RayPolynomial result;
     result.degree = degree_;
     std::array<Plain, kMaxDegree + 1> c;
-    expand(origin, {0.0, 0.0, 0.0}, direction, {0.0, 0.0, 0.0}, 0.0, false, c);
+    expand<Plain>(
+        {Plain{origin[0]}, Plain{origin[1]}, Plain{origin[2]}},
+        {Plain{direction[0]}, Plain{direction[1]}, Plain{direction[2]}},
+        [](const ZTerm& z) { return Plain{z.coefficient}; }, c);
     for (int k = 0; k <= degree_; ++k) {
         result.c[k] = c[k].v;
     }
@@ -105,7 +147,12 @@ RestrictionBall LineRestrictor::restrict_with_bounds(const Vec3& origin, const V
                                                      const LineError& error,
                                                      double coefficient_error) const {
     std::array<Ball, kMaxDegree + 1> c;
-    expand(origin, error.origin, direction, error.direction, coefficient_error, false, c);
+    expand<Ball>(
+        balls(origin, error.origin), balls(direction, error.direction),
+        [coefficient_error](const ZTerm& z) {
+            return Ball{z.coefficient, z.magnitude * coefficient_error};
+        },
+        c);
     const double n = rounding_depth_;
     const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
     RestrictionBall ball;
@@ -115,6 +162,46 @@ RestrictionBall LineRestrictor::restrict_with_bounds(const Vec3& origin, const V
         ball.polynomial.c[k] = c[k].v;
         ball.radius[k] = c[k].r * inflate + (n + 8.0) * 0x1.0p-1060;
         ball.certified = ball.certified && std::isfinite(ball.radius[k]) && std::isfinite(c[k].v);
+    }
+    if (!ball.certified) {
+        ball.radius.fill(INFINITY);
+    }
+    return ball;
+}
+
+RestrictionBall LineRestrictor::restrict_with_double_double_bounds(const DoubleDoubleLine& line,
+                                                                   const LineError& error,
+                                                                   double coefficient_error) const {
+    std::array<DoubleDoubleBall, 3> origin, direction;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto axis = static_cast<glm::length_t>(i);
+        origin[i] = {{line.origin_hi[axis], line.origin_lo[axis]}, error.origin[axis]};
+        direction[i] = {{line.direction_hi[axis], line.direction_lo[axis]}, error.direction[axis]};
+    }
+    std::array<DoubleDoubleBall, kMaxDegree + 1> c;
+    expand<DoubleDoubleBall>(
+        origin, direction,
+        [coefficient_error](const ZTerm& z) {
+            return DoubleDoubleBall{{z.coefficient, z.low_word},
+                                    z.magnitude * (1.0 + 0x1.0p-52) * coefficient_error};
+        },
+        c);
+    // The radii are sums of products of positive doubles, each rounded: (1 + 2γ_N) covers
+    // them as in restrict_with_bounds. A double-double's error-free parts lose up to 2^-1074
+    // each when they underflow; the floor covers that as the doubles' does, with room for the
+    // factors such a loss is multiplied by.
+    const double n = rounding_depth_;
+    const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
+    RestrictionBall ball;
+    ball.polynomial.degree = degree_;
+    ball.certified = std::isfinite(coefficient_error);
+    for (int k = 0; k <= degree_; ++k) {
+        // hi is the double nearest hi + lo; |lo| joins the radius.
+        ball.polynomial.c[k] = c[k].v.hi;
+        ball.radius[k] = (c[k].r * inflate + std::abs(c[k].v.lo)) * (1.0 + 2.0 * kUnit) +
+                         (n + 8.0) * 0x1.0p-1000;
+        ball.certified = ball.certified && std::isfinite(ball.radius[k]) &&
+                         std::isfinite(c[k].v.hi) && std::isfinite(c[k].v.lo);
     }
     if (!ball.certified) {
         ball.radius.fill(INFINITY);
@@ -138,7 +225,12 @@ std::array<double, kMaxDegree + 1> LineRestrictor::growth_bound(const Vec3& orig
     // The magnitudes' expansion in balls: with every input and coefficient positive, the
     // radius bounds S(M + δ) − S(M) (and S(M)'s own rounding).
     std::array<Ball, kMaxDegree + 1> c;
-    expand(origin_magnitude, error.origin, direction_magnitude, error.direction, 0.0, true, c);
+    expand<Ball>(
+        balls(origin_magnitude, error.origin), balls(direction_magnitude, error.direction),
+        [](const ZTerm& z) {
+            return Ball{z.magnitude, 0.0};
+        },
+        c);
     const double n = rounding_depth_;
     const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
     std::array<double, kMaxDegree + 1> growth{};
@@ -148,9 +240,9 @@ std::array<double, kMaxDegree + 1> LineRestrictor::growth_bound(const Vec3& orig
     return growth;
 }
 
-template <class Scalar>
-void LineRestrictor::expand(const Vec3& origin, const Vec3& origin_error, const Vec3& direction,
-                            const Vec3& direction_error, double coefficient_error, bool magnitudes,
+template <class Scalar, class Coefficient>
+void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
+                            const std::array<Scalar, 3>& direction, Coefficient coefficient,
                             std::array<Scalar, kMaxDegree + 1>& result) const {
     for (int k = 0; k <= std::max(degree_, 0); ++k) {
         result[k] = Scalar::zero();
@@ -163,8 +255,8 @@ void LineRestrictor::expand(const Vec3& origin, const Vec3& origin_error, const 
     using PowerTable = std::array<std::array<Scalar, kMaxDegree + 1>, kMaxDegree + 1>;
     PowerTable powers[3];
     for (int axis = 0; axis < 3; ++axis) {
-        const Scalar o = Scalar::of(origin[axis], origin_error[axis]);
-        const Scalar d = Scalar::of(direction[axis], direction_error[axis]);
+        const Scalar& o = origin[static_cast<std::size_t>(axis)];
+        const Scalar& d = direction[static_cast<std::size_t>(axis)];
         PowerTable& table = powers[axis];
         table[0][0] = Scalar::one();
         for (int k = 1; k <= max_exponent_; ++k) {
@@ -185,10 +277,9 @@ void LineRestrictor::expand(const Vec3& origin, const Vec3& origin_error, const 
             std::fill_n(in_z.begin(), y_group.max_ez + 1, Scalar::zero());
             for (const ZTerm& z : y_group.z_terms) {
                 const auto& power = zs[z.ez];
-                const Scalar coefficient = Scalar::of(magnitudes ? z.magnitude : z.coefficient,
-                                                      z.magnitude * coefficient_error);
+                const Scalar c = coefficient(z);
                 for (int j = 0; j <= z.ez; ++j) {
-                    Scalar::multiply_add(in_z[j], coefficient, power[j]);
+                    Scalar::multiply_add(in_z[j], c, power[j]);
                 }
             }
             const auto& y_power = ys[y_group.ey];

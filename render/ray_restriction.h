@@ -33,10 +33,19 @@ struct LineError {
     Vec3 direction{0.0};
 };
 
+// A line whose origin and direction are double-doubles (hi + lo, componentwise).
+struct DoubleDoubleLine {
+    Vec3 origin_hi{0.0}, origin_lo{0.0};
+    Vec3 direction_hi{0.0}, direction_lo{0.0};
+};
+
 class LineRestrictor {
   public:
-    // Precondition: every exponent sum is at most kMaxDegree.
-    explicit LineRestrictor(std::span<const algebra::CompiledTerm> terms);
+    // Precondition: every exponent sum is at most kMaxDegree. `low_words`, when given, are
+    // the coefficients' low words (CompiledPolynomial::low_words), for the double-double
+    // restriction; without them it reads the coefficients as the doubles of `terms`.
+    explicit LineRestrictor(std::span<const algebra::CompiledTerm> terms,
+                            std::span<const double> low_words = {});
 
     int degree() const { return degree_; }
     // f(origin + t·direction), exactly of degree `degree()` in layout (higher coefficients may
@@ -56,6 +65,15 @@ class LineRestrictor {
     RestrictionBall restrict_with_relative_bounds(const Vec3& origin, const Vec3& direction,
                                                   double input_error,
                                                   double coefficient_error) const;
+    // The same in double-double arithmetic, for a line given in double-double within `error`
+    // of the exact one and coefficients within `coefficient_error` (relative) of the
+    // double-doubles: radii near 1e-31 of the terms' magnitudes, where doubles give 1e-15 —
+    // for the pieces of a ray that doubles cannot decide (a root near where F is tiny at a
+    // degree like 30), before exact arithmetic. About three times restrict_with_bounds' cost.
+    // The result is rounded to doubles, each coefficient's rounding added to its radius.
+    RestrictionBall restrict_with_double_double_bounds(const DoubleDoubleLine& line,
+                                                       const LineError& error,
+                                                       double coefficient_error) const;
     // For every line whose origin and direction are componentwise at most `origin_magnitude`
     // and `direction_magnitude` in absolute value: a bound, per coefficient, on how much its
     // restriction changes when the line moves by at most `error` — S(M + δ) − S(M) for the
@@ -72,6 +90,7 @@ class LineRestrictor {
         int ez;
         double coefficient;
         double magnitude;  // |coefficient|
+        double low_word;   // of the coefficient as a double-double (0 without low words)
     };
     struct YGroup {
         int ey;
@@ -88,13 +107,12 @@ class LineRestrictor {
     int max_exponent_ = 0;
     int rounding_depth_ = 0;
 
-    // The expansion itself, in Plain doubles or in Balls (ray_restriction.cpp) that carry
-    // the inputs' errors and every rounding's.
-    // With `magnitudes`, the coefficients are replaced by their absolute values.
-    template <class Scalar>
-    void expand(const Vec3& origin, const Vec3& origin_error, const Vec3& direction,
-                const Vec3& direction_error, double coefficient_error, bool magnitudes,
-                std::array<Scalar, kMaxDegree + 1>& result) const;
+    // The expansion itself, in the scalars of ray_restriction.cpp: doubles, or balls in
+    // doubles or double-doubles that carry the inputs' errors and every rounding's. The line's
+    // coordinates are given as scalars; `coefficient(z)` is the scalar of a term's coefficient.
+    template <class Scalar, class Coefficient>
+    void expand(const std::array<Scalar, 3>& origin, const std::array<Scalar, 3>& direction,
+                Coefficient coefficient, std::array<Scalar, kMaxDegree + 1>& result) const;
 };
 
 }  // namespace locus::render

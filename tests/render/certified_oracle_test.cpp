@@ -379,6 +379,89 @@ TEST(OracleRays, GrazingRaysFromTheSurfaceFindTheNextRoot) {
     EXPECT_EQ(checked, 72);
 }
 
+// Degree 30 (Chmutov's T₃₀(x) + T₃₀(y) + T₃₀(z), clip radius 1.2), where doubles cannot
+// decide most pieces near the roots and the double-double tier and exact arithmetic take over:
+// rays of a small frame through the clip sphere, some entering it where the surface crosses
+// the sphere (F tiny at the start), each against the exact oracle.
+TEST(OracleRays, DegreeThirtyRaysAreRightThroughEveryTier) {
+    std::string equation;
+    {
+        std::vector<std::vector<long long>> t{{1}, {0, 1}};
+        for (int k = 2; k <= 30; ++k) {
+            std::vector<long long> next(static_cast<std::size_t>(k) + 1, 0);
+            for (std::size_t i = 0; i < t[k - 1].size(); ++i) {
+                next[i + 1] += 2 * t[k - 1][i];
+            }
+            for (std::size_t i = 0; i < t[k - 2].size(); ++i) {
+                next[i] -= t[k - 2][i];
+            }
+            t.push_back(next);
+        }
+        for (const char* v : {"x", "y", "z"}) {
+            for (std::size_t i = 0; i < t[30].size(); ++i) {
+                if (t[30][i] != 0) {
+                    equation +=
+                        "+(" + std::to_string(t[30][i]) + ")*" + v + "^" + std::to_string(i);
+                }
+            }
+        }
+    }
+    const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+    const test::ExactRayOracle oracle(equation);
+    const double radius = 1.2;
+    const SurfaceTracer tracer(f, TraceMethod::certified, radius);
+    std::mt19937_64 rng(30);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto on_sphere = [&](Point p) {
+        return scaled(p, radius / std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    };
+    int checked = 0, hits = 0;
+    for (int i = 0; i < 16; ++i) {
+        Point origin, d;
+        if (i % 2 == 0) {
+            // From 3.5 radii away toward a random point of the ball.
+            origin = scaled(on_sphere({unit(rng), unit(rng), unit(rng)}), 3.5);
+            d = minus(scaled({unit(rng), unit(rng), unit(rng)}, 0.6 * radius), origin);
+        } else {
+            // Entering the sphere where the surface crosses it: bisection in doubles on an
+            // arc between points of the sphere where f has opposite signs.
+            Point positive, negative;
+            do {
+                positive = on_sphere({unit(rng), unit(rng), unit(rng)});
+            } while (!(f.value(positive) > 0.0));
+            do {
+                negative = on_sphere({unit(rng), unit(rng), unit(rng)});
+            } while (!(f.value(negative) < 0.0));
+            for (int step = 0; step < 60; ++step) {
+                const Point middle =
+                    on_sphere(scaled(minus(positive, scaled(negative, -1.0)), 0.5));
+                (f.value(middle) > 0.0 ? positive : negative) = middle;
+            }
+            const Point entry = positive;
+            // Inward, at a random angle to the sphere's normal, from 2 radii outside.
+            Point inward = minus({unit(rng), unit(rng), unit(rng)}, scaled(entry, 1.6 / radius));
+            d = inward;
+            origin = minus(entry, scaled(d, 2.0));
+        }
+        const double a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const double b = origin[0] * d[0] + origin[1] * d[1] + origin[2] * d[2];
+        const double c =
+            origin[0] * origin[0] + origin[1] * origin[1] + origin[2] * origin[2] - radius * radius;
+        const double root = std::sqrt(b * b - a * c);
+        const double lo = (-b - root) / a, hi = (-b + root) / a;
+        const RootResult r = tracer.first_hit({to_vec(origin), to_vec(d)}, {lo, hi});
+        ASSERT_NE(r.status, RootStatus::unknown) << "ray " << i;
+        EXPECT_TRUE(test::ExactRayOracle::is_right(
+            oracle.restrict(origin, d), lo, hi, r.status == RootStatus::hit, r.t, kTraceTolerance))
+            << "ray " << i << ": answered "
+            << (r.status == RootStatus::hit ? std::to_string(r.t) : "miss");
+        hits += r.status == RootStatus::hit ? 1 : 0;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 16);
+    EXPECT_GT(hits, 8);
+}
+
 // The oracle itself, on closed forms: it must be right for the tests above to mean anything.
 TEST(ExactRayOracle, AgreesWithClosedForms) {
     const test::ExactRayOracle sphere("x^2+y^2+z^2-1");

@@ -4,9 +4,22 @@
 
 #include <gtest/gtest.h>
 
+#include <flint/fmpq_mpoly.h>
+#include <flint/fmpq_poly.h>
+
+#include <array>
+#include <cmath>
 #include <random>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "algebra/compiled.h"
+#include "algebra/flint_convert.h"
+#include "algebra/parse.h"
+#include "algebra/poly_ring.h"
+#include "algebra/rational.h"
+#include "algebra/real_roots.h"
 #include "render/ray_family.h"
 #include "tests/support/test_data.h"
 
@@ -54,6 +67,87 @@ void expect_restriction_matches(const algebra::CompiledPolynomial& f, const RayP
     }
 }
 
+// The exact coefficients of f(m + x·h) over Q for a double-double line (hi + lo read
+// exactly), by FLINT's composition: the oracle of the double-double restriction.
+struct ExactCoefficient {
+    algebra::Rational exact;
+    double value = 0.0;  // near exact, for messages
+    // |exact − c| ≤ r, decided in rationals.
+    bool within(double c, double r) const {
+        algebra::Rational difference, bound;
+        algebra::set_exact_double(difference.get(), c);
+        fmpq_sub(difference.get(), difference.get(), exact.get());
+        fmpq_abs(difference.get(), difference.get());
+        algebra::set_exact_double(bound.get(), r);
+        return fmpq_cmp(difference.get(), bound.get()) <= 0;
+    }
+};
+
+using RingPtrForTest = algebra::RingPtr;
+RingPtrForTest xyz_ring_for_test() {
+    return algebra::PolyRing::make({"x", "y", "z"}, algebra::MonomialOrder::grevlex(3));
+}
+
+std::vector<ExactCoefficient> exact_restriction(const std::string& equation,
+                                                const DoubleDoubleLine& line) {
+    const algebra::RingPtr ring = xyz_ring_for_test();
+    const algebra::Polynomial f = algebra::parse_polynomial(equation, ring);
+    algebra::FlintContext context(ring);
+    const algebra::FlintPolynomial flint_f = algebra::to_fmpq_mpoly(f, context);
+    std::array<fmpq_poly_t, 3> coordinates;
+    std::array<fmpq_poly_struct*, 3> pointers;
+    algebra::Rational part, sum;
+    for (int i = 0; i < 3; ++i) {
+        fmpq_poly_init(coordinates[i]);
+        for (const auto& [hi, lo, power] :
+             {std::tuple{line.origin_hi[i], line.origin_lo[i], 0},
+              std::tuple{line.direction_hi[i], line.direction_lo[i], 1}}) {
+            algebra::set_exact_double(sum.get(), hi);
+            algebra::set_exact_double(part.get(), lo);
+            fmpq_add(sum.get(), sum.get(), part.get());
+            fmpq_poly_set_coeff_fmpq(coordinates[i], power, sum.get());
+        }
+        pointers[i] = coordinates[i];
+    }
+    fmpq_poly_t composed;
+    fmpq_poly_init(composed);
+    fmpq_mpoly_compose_fmpq_poly(composed, flint_f.get(), pointers.data(), context.get());
+    std::vector<ExactCoefficient> result(static_cast<std::size_t>(fmpq_poly_length(composed)));
+    for (std::size_t k = 0; k < result.size(); ++k) {
+        fmpq_poly_get_coeff_fmpq(result[k].exact.get(), composed, static_cast<slong>(k));
+        result[k].value = fmpq_get_d(result[k].exact.get());
+    }
+    fmpq_poly_clear(composed);
+    for (auto& c : coordinates) {
+        fmpq_poly_clear(c);
+    }
+    return result;
+}
+
+// Chmutov's T_n(x) + T_n(y) + T_n(z) as text (integer coefficients by the recurrence).
+std::string chebyshev_surface(int n) {
+    std::vector<std::vector<long long>> t{{1}, {0, 1}};
+    for (int k = 2; k <= n; ++k) {
+        std::vector<long long> next(static_cast<std::size_t>(k) + 1, 0);
+        for (std::size_t i = 0; i < t[k - 1].size(); ++i) {
+            next[i + 1] += 2 * t[k - 1][i];
+        }
+        for (std::size_t i = 0; i < t[k - 2].size(); ++i) {
+            next[i] -= t[k - 2][i];
+        }
+        t.push_back(next);
+    }
+    std::string text;
+    for (const char* v : {"x", "y", "z"}) {
+        for (std::size_t i = 0; i < t[n].size(); ++i) {
+            if (t[n][i] != 0) {
+                text += "+(" + std::to_string(t[n][i]) + ")*" + v + "^" + std::to_string(i);
+            }
+        }
+    }
+    return text;
+}
+
 TEST(LineRestrictor, MatchesDirectEvaluation) {
     for (int seed = 0; seed < test::seed_count(30); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
@@ -68,6 +162,66 @@ TEST(LineRestrictor, MatchesDirectEvaluation) {
         const Vec3 d{coordinate(rng), coordinate(rng), coordinate(rng)};
         expect_restriction_matches(f, restrictor.restrict_to(o, d), o, d);
     }
+}
+
+// The double-double restriction's balls against the exact restriction over Q (FLINT's
+// composition, which shares no code with it): for random surfaces with coefficients that are
+// not doubles (twenty digits, thirds: their low words matter), random double-double lines and a
+// degree-30 surface, every exact coefficient of f(m + x·h) lies within its radius — and each
+// radius is the coefficient's own rounding to a double plus at most 1e-24 of the terms'
+// magnitudes, where a restriction in doubles gives about 1e-16 of them.
+TEST(LineRestrictor, DoubleDoubleBallsHoldTheExactRestriction) {
+    const RingPtrForTest ring = xyz_ring_for_test();
+    std::mt19937_64 rng(30);
+    std::uniform_real_distribution<double> coordinate(-1.5, 1.5), tiny(-1e-17, 1e-17);
+    int checked = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        std::string equation;
+        if (trial % 10 == 9) {
+            equation = chebyshev_surface(30);
+        } else {
+            equation = random_equation(rng, 2 + trial % 9) +
+                       "+12345678901234567891*x*y-98765432109876543211/3*z^2";
+        }
+        const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+        const LineRestrictor restrictor(f.terms(), f.low_words());
+        DoubleDoubleLine line;
+        for (int i = 0; i < 3; ++i) {
+            line.origin_hi[i] = coordinate(rng);
+            line.origin_lo[i] = tiny(rng) * std::abs(line.origin_hi[i]);
+            line.direction_hi[i] = 0.01 * coordinate(rng);
+            line.direction_lo[i] = tiny(rng) * std::abs(line.direction_hi[i]);
+        }
+        const RestrictionBall ball = restrictor.restrict_with_double_double_bounds(
+            line, LineError{}, f.double_double_coefficient_error());
+        ASSERT_TRUE(ball.certified);
+        const std::vector<ExactCoefficient> exact = exact_restriction(f.equation(), line);
+        // Σ|c|·(|m| + |h|)^|α|: what any rounding is measured against.
+        double magnitude = 0.0;
+        for (const algebra::CompiledTerm& term : f.terms()) {
+            magnitude +=
+                std::abs(term.coefficient) *
+                std::pow(std::abs(line.origin_hi.x) + std::abs(line.direction_hi.x), term.ex) *
+                std::pow(std::abs(line.origin_hi.y) + std::abs(line.direction_hi.y), term.ey) *
+                std::pow(std::abs(line.origin_hi.z) + std::abs(line.direction_hi.z), term.ez);
+        }
+        for (int k = 0; k <= ball.polynomial.degree; ++k) {
+            const auto at = static_cast<std::size_t>(k);
+            const double exact_value = at < exact.size() ? exact[at].value : 0.0;
+            const bool within = at < exact.size()
+                                    ? exact[at].within(ball.polynomial.c[k], ball.radius[k])
+                                    : std::abs(ball.polynomial.c[k]) <= ball.radius[k];
+            EXPECT_TRUE(within) << equation << ": coefficient " << k << " " << ball.polynomial.c[k]
+                                << " ± " << ball.radius[k] << ", exact " << exact_value;
+            // The rounding to a double (about u·|c_k|) and double-double's own radius (u² of the
+            // terms' magnitudes): in doubles the radius would be about u·magnitude instead.
+            EXPECT_LT(ball.radius[k],
+                      2.5 * 0x1.0p-53 * std::abs(ball.polynomial.c[k]) + 1e-24 * magnitude)
+                << equation << ": coefficient " << k;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 300);
 }
 
 TEST(RayFamily, MatchesTheGeneralRestrictionOfEachPrimaryRay) {

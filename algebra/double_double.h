@@ -1,6 +1,8 @@
 // Double-double ("double-word") arithmetic: a real kept as an unevaluated sum hi + lo of two
 // doubles with |lo| ≤ ulp(hi)/2, about 106 bits of precision, for the certified evaluations
-// that doubles cannot decide (algebra/compiled.h, CompiledPolynomial::enclose_on_line).
+// that doubles cannot decide: CompiledPolynomial::enclose_on_line here, and the renderer's
+// double-double restrictions of a surface to a ray (render/ray_restriction.h) — the number type
+// of the compiled-polynomial interface, beside compiled.h.
 //
 // The algorithms and their relative error bounds, with u = 2^-53 and no underflow or overflow,
 // are those of Joldes, Muller and Popescu, "Tight and rigorous error bounds for basic building
@@ -11,7 +13,7 @@
 
 #include <cmath>
 
-namespace locus::algebra::detail {
+namespace locus::algebra {
 
 struct DoubleDouble {
     double hi = 0.0;
@@ -57,4 +59,4 @@ inline DoubleDouble from_double(double v) {
     return {v, 0.0};
 }
 
-}  // namespace locus::algebra::detail
+}  // namespace locus::algebra
