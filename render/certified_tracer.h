@@ -8,16 +8,20 @@
 //   * a miss, only when F has no real root in (lo, hi].
 // Nothing depends on the interval's length or the surface's scale.
 //
-// How (three tiers, each taken only when the one before cannot decide):
+// How (four tiers, each taken only when the one before cannot decide):
 //  1. doubles with rigorous error bounds: the restriction of f to a segment of the ray with a
 //     radius per coefficient (LineRestrictor::restrict_with_bounds), in the Bernstein basis,
 //     roots isolated where no rounding can change the decision (certified_isolation.h); a
 //     segment the radii blur is expanded again about its undecided piece, where the terms are
 //     smaller;
-//  2. double-double evaluation of f at points of the ray (CompiledPolynomial::enclose_on_line)
-//     to narrow a root that doubles isolated but cannot place to the tolerance;
-//  3. exact arithmetic over Q (algebra::exact_first_root) for what neither decides: tangent
-//     rays, double roots, a root at the interval's start, rays lying in the surface.
+//  2. a piece that re-expanding in doubles cannot decide (undecided at the interval's start, or
+//     not shrinking) is restricted in double-double (restrict_with_double_double_bounds);
+//  3. double-double evaluation of f at points of the ray (CompiledPolynomial::enclose_on_line)
+//     to narrow a root that the balls isolated but cannot place to the tolerance;
+//  4. exact arithmetic over Q (algebra::exact_first_root) for what none decides: tangent
+//     rays, double roots, a root at the interval's start, rays lying in the surface — on the
+//     undecided piece alone when it is at the start, the search going on past it.
+
 #pragma once
 
 #include <limits>
