@@ -28,7 +28,7 @@ struct GroebnerArgs {
     bool stats = false;
     bool check = false;
     ProcessLimitArgs limits;
-    int threads = 0;  // for the certification; 0 = all hardware threads
+    int threads = 0;  // for the modular route and GF(p); 0 = all hardware threads
 };
 
 void print_modular_stats(const algebra::ModularStats& s) {
@@ -278,8 +278,9 @@ void add_groebner_command(CLI::App& app, CommandContext& context) {
                   "verify independently: generators and S-pairs reduce to zero, basis reduced");
     add_process_limit_options(cmd, args->limits);
     cmd->add_option("--threads", args->threads,
-                    "threads for the certification of the modular route (0: all cores, the "
-                    "default; the benchmarks use 1)");
+                    "threads for the modular route — F4's linear algebra, the replays on other "
+                    "primes, the certification — and over GF(p) (0: all cores, the default; the "
+                    "benchmarks use 1)");
     cmd->callback([args, &context] { context.exit_code = run_groebner(*args, context.progress); });
 }
 

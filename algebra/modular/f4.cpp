@@ -114,24 +114,10 @@ void F4Engine::step() {
     // Reduce the S-halves by the reducers, then echelonize what is left among itself. A
     // reduced row's storage stays where it is when `fresh` grows (a moved vector keeps its
     // buffer), so its pivot view stays valid.
-    std::vector<std::uint64_t> acc(width, 0);
     std::vector<SparseRow> fresh;
     fresh.reserve(rows.size());
     std::vector<std::size_t> useful;  // rows that gave new elements, in order
-    std::vector<std::uint32_t> row_columns;
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        check_deadline();
-        row_columns = columns_of(rows[r], column_of);
-        std::optional<SparseRow> reduced =
-            reduce_row(row_view(rows[r], row_columns), acc, pivots, total_rows);
-        if (!reduced) {
-            ++stats_.zero_rows;
-            continue;
-        }
-        useful.push_back(r);
-        fresh.push_back(std::move(*reduced));
-        pivots.add(view_of(fresh.back()));
-    }
+    reduce_rows(rows, column_of, pivots, total_rows, fresh, useful);
     stats_.linear_algebra_seconds += seconds_since(algebra_start);
     std::vector<std::uint64_t> column_monomials;
     column_monomials.reserve(columns.size() * words_);

@@ -1,6 +1,11 @@
 // F4's linear algebra: rows reduced by the pivots through a dense accumulator.
 #include "algebra/modular/detail/f4_engine.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <cstdint>
 
@@ -87,6 +92,13 @@ SparseRow F4Engine::reduce_dense(std::vector<std::uint64_t>& acc, std::size_t fr
                                           : reduce_dense_with<false>(acc, from, pivots, field_.p);
 }
 
+void F4Engine::make_monic(SparseRow& row) const {
+    const std::uint64_t inverse = field_.inverse(row.coefficients.front());
+    for (std::uint32_t& c : row.coefficients) {
+        c = static_cast<std::uint32_t>(field_.multiply(c, inverse));
+    }
+}
+
 std::optional<SparseRow> F4Engine::reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
                                               const Pivots& pivots, std::size_t rows) const {
     for (std::size_t k = 0; k < row.size; ++k) {
@@ -96,11 +108,77 @@ std::optional<SparseRow> F4Engine::reduce_row(PivotRow row, std::vector<std::uin
     if (reduced.columns.empty()) {
         return std::nullopt;
     }
-    const std::uint64_t inverse = field_.inverse(reduced.coefficients.front());
-    for (std::uint32_t& c : reduced.coefficients) {
-        c = static_cast<std::uint32_t>(field_.multiply(c, inverse));
-    }
+    make_monic(reduced);
     return reduced;
+}
+
+void F4Engine::reduce_rows(const std::vector<RowSpec>& rows,
+                           const std::vector<std::uint32_t>& column_of, Pivots& pivots,
+                           std::size_t total_rows, std::vector<SparseRow>& fresh,
+                           std::vector<std::size_t>& useful) {
+    const std::size_t width = pivots.of_column.size();
+    const int threads = options_.threads ? std::max(1, options_.threads()) : 1;
+    // Below this many rows a step is not worth the threads' start.
+    constexpr std::size_t kRowsForThreads = 32;
+    if (threads == 1 || rows.size() < kRowsForThreads) {
+        std::vector<std::uint64_t> acc(width, 0);
+        std::vector<std::uint32_t> row_columns;
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            check_deadline();
+            row_columns = columns_of(rows[r], column_of);
+            std::optional<SparseRow> reduced =
+                reduce_row(row_view(rows[r], row_columns), acc, pivots, total_rows);
+            if (!reduced) {
+                ++stats_.zero_rows;
+                continue;
+            }
+            useful.push_back(r);
+            fresh.push_back(std::move(*reduced));
+            pivots.add(view_of(fresh.back()));
+        }
+        return;
+    }
+    // By the reducers alone, side by side (the pivots hold only the reducers until the second
+    // pass; each thread has its own accumulator).
+    std::vector<SparseRow> partial(rows.size());
+    tbb::enumerable_thread_specific<std::vector<std::uint64_t>> accumulators(
+        [width] { return std::vector<std::uint64_t>(width, 0); });
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, rows.size(), 8),
+            [&](const tbb::blocked_range<std::size_t>& range) {
+                std::vector<std::uint64_t>& acc = accumulators.local();
+                for (std::size_t r = range.begin(); r < range.end(); ++r) {
+                    check_deadline();
+                    const std::vector<std::uint32_t> row_columns = columns_of(rows[r], column_of);
+                    const PivotRow row = row_view(rows[r], row_columns);
+                    for (std::size_t k = 0; k < row.size; ++k) {
+                        acc[row.columns[k]] = row.coefficients[k];
+                    }
+                    partial[r] = reduce_dense(acc, row.columns[0], pivots, total_rows);
+                }
+            });
+    });
+    // Then in order by the new rows (and the reducers again, for what the new rows bring).
+    std::vector<std::uint64_t> acc(width, 0);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        SparseRow& row = partial[r];
+        if (!row.columns.empty() && !fresh.empty()) {
+            for (std::size_t k = 0; k < row.columns.size(); ++k) {
+                acc[row.columns[k]] = row.coefficients[k];
+            }
+            row = reduce_dense(acc, row.columns[0], pivots, total_rows);
+        }
+        if (row.columns.empty()) {
+            ++stats_.zero_rows;
+            continue;
+        }
+        make_monic(row);
+        useful.push_back(r);
+        fresh.push_back(std::move(row));
+        pivots.add(view_of(fresh.back()));
+    }
 }
 
 // The reduced rows as polynomials, smallest leading monomial first (the order in which

@@ -231,6 +231,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     const MonomialLayout& layout = ring->layout();
     modular::F4Options f4_options;
     f4_options.deadline = options.deadline;
+    f4_options.threads = [&options] { return options.threads_now(); };
     if (options.progress) {
         // F4's steps on a prime (the first prime's run is the long one before any replay).
         f4_options.progress = [&](std::size_t steps, std::size_t basis_size) {

@@ -170,6 +170,16 @@ class F4Engine {
     // non-zero result is made monic. Nothing when it reduces to 0.
     std::optional<SparseRow> reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
                                         const Pivots& pivots, std::size_t rows) const;
+    // A step's S-halves reduced in order, each by the pivots and by the rows before it that
+    // did not reduce to zero (which join the pivots as `fresh`, monic; `useful` their indices
+    // in `rows`). With several threads, every row is first reduced by the reducers alone, side
+    // by side — most of the work: three rows in four reduce to zero —, and then in order by
+    // the new rows: the same rows result, a row's reduction by a set of pivots with distinct
+    // leading columns being unique.
+    void reduce_rows(const std::vector<RowSpec>& rows, const std::vector<std::uint32_t>& column_of,
+                     Pivots& pivots, std::size_t total_rows, std::vector<SparseRow>& fresh,
+                     std::vector<std::size_t>& useful);
+    void make_monic(SparseRow& row) const;
     // The reduced rows as polynomials, smallest leading monomial first (the order in which
     // they join the basis, which a replay repeats).
     std::vector<ModularPolynomial> new_elements(
