@@ -122,6 +122,29 @@ struct DoubleDoubleBall {
     }
 };
 
+// The restriction as balls: value(k) ± radius(k, inflate), where inflate = 1 + 2γ_N covers the
+// rounding of radii reached by at most N = depth roundings (sums of products of positive
+// doubles); every radius infinite when anything is not finite.
+template <class Value, class Radius>
+RestrictionBall restriction_ball(int degree, int depth, bool certified, Value value,
+                                 Radius radius) {
+    const double n = depth;
+    const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
+    RestrictionBall ball;
+    ball.polynomial.degree = degree;
+    ball.certified = certified;
+    for (int k = 0; k <= degree; ++k) {
+        ball.polynomial.c[k] = value(k);
+        ball.radius[k] = radius(k, inflate);
+        ball.certified =
+            ball.certified && std::isfinite(ball.radius[k]) && std::isfinite(ball.polynomial.c[k]);
+    }
+    if (!ball.certified) {
+        ball.radius.fill(INFINITY);
+    }
+    return ball;
+}
+
 // The balls of a line's coordinates: value ± error, componentwise.
 std::array<Ball, 3> balls(const Vec3& value, const Vec3& error) {
     return {Ball{value[0], error[0]}, Ball{value[1], error[1]}, Ball{value[2], error[2]}};
@@ -153,20 +176,10 @@ RestrictionBall LineRestrictor::restrict_with_bounds(const Vec3& origin, const V
             return Ball{z.coefficient, z.magnitude * coefficient_error};
         },
         c);
-    const double n = rounding_depth_;
-    const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
-    RestrictionBall ball;
-    ball.polynomial.degree = degree_;
-    ball.certified = std::isfinite(coefficient_error);
-    for (int k = 0; k <= degree_; ++k) {
-        ball.polynomial.c[k] = c[k].v;
-        ball.radius[k] = c[k].r * inflate + (n + 8.0) * 0x1.0p-1060;
-        ball.certified = ball.certified && std::isfinite(ball.radius[k]) && std::isfinite(c[k].v);
-    }
-    if (!ball.certified) {
-        ball.radius.fill(INFINITY);
-    }
-    return ball;
+    const double floor = (rounding_depth_ + 8.0) * 0x1.0p-1060;
+    return restriction_ball(
+        degree_, rounding_depth_, std::isfinite(coefficient_error), [&](int k) { return c[k].v; },
+        [&](int k, double inflate) { return c[k].r * inflate + floor; });
 }
 
 RestrictionBall LineRestrictor::restrict_with_double_double_bounds(const DoubleDoubleLine& line,
@@ -186,27 +199,17 @@ RestrictionBall LineRestrictor::restrict_with_double_double_bounds(const DoubleD
                                     z.magnitude * (1.0 + 0x1.0p-52) * coefficient_error};
         },
         c);
-    // The radii are sums of products of positive doubles, each rounded: (1 + 2γ_N) covers
-    // them as in restrict_with_bounds. A double-double's error-free parts lose up to 2^-1074
-    // each when they underflow; the floor covers that as the doubles' does, with room for the
-    // factors such a loss is multiplied by.
-    const double n = rounding_depth_;
-    const double inflate = 1.0 + 2.0 * n * kUnit / (1.0 - n * kUnit);
-    RestrictionBall ball;
-    ball.polynomial.degree = degree_;
-    ball.certified = std::isfinite(coefficient_error);
-    for (int k = 0; k <= degree_; ++k) {
-        // hi is the double nearest hi + lo; |lo| joins the radius.
-        ball.polynomial.c[k] = c[k].v.hi;
-        ball.radius[k] = (c[k].r * inflate + std::abs(c[k].v.lo)) * (1.0 + 2.0 * kUnit) +
-                         (n + 8.0) * 0x1.0p-1000;
-        ball.certified = ball.certified && std::isfinite(ball.radius[k]) &&
-                         std::isfinite(c[k].v.hi) && std::isfinite(c[k].v.lo);
-    }
-    if (!ball.certified) {
-        ball.radius.fill(INFINITY);
-    }
-    return ball;
+    // The radii's own rounding as in restrict_with_bounds. A double-double's error-free parts
+    // lose up to 2^-1074 each when they underflow; the floor covers that as the doubles' does,
+    // with room for the factors such a loss is multiplied by. hi is the double nearest
+    // hi + lo: |lo| joins the radius.
+    const double floor = (rounding_depth_ + 8.0) * 0x1.0p-1000;
+    return restriction_ball(
+        degree_, rounding_depth_, std::isfinite(coefficient_error),
+        [&](int k) { return std::isfinite(c[k].v.lo) ? c[k].v.hi : NAN; },
+        [&](int k, double inflate) {
+            return (c[k].r * inflate + std::abs(c[k].v.lo)) * (1.0 + 2.0 * kUnit) + floor;
+        });
 }
 
 RestrictionBall LineRestrictor::restrict_with_relative_bounds(const Vec3& origin,

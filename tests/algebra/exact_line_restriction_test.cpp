@@ -13,7 +13,6 @@
 
 #include <cmath>
 #include <random>
-#include <sstream>
 
 #include "algebra/flint_convert.h"
 #include "algebra/parse.h"
@@ -21,6 +20,7 @@
 #include "algebra/polynomial.h"
 #include "algebra/print.h"
 #include "algebra/real_roots.h"
+#include "tests/support/chmutov.h"
 
 namespace locus::algebra {
 namespace {
@@ -161,28 +161,7 @@ TEST(ExactLineRestriction, HandlesTheDegreeThirtySurfaceAndConstantCoordinates) 
     // Chmutov's T₃₀(x) + T₃₀(y) + T₃₀(z), by the recurrence, and a sparse quartic whose line
     // keeps y fixed (d_y = 0) and passes through x = 0 (o_x = 0).
     const RingPtr ring = xyz();
-    std::ostringstream chebyshev;
-    {
-        std::vector<std::vector<long long>> t{{1}, {0, 1}};
-        for (int k = 2; k <= 30; ++k) {
-            std::vector<long long> next(static_cast<std::size_t>(k) + 1, 0);
-            for (std::size_t i = 0; i < t[k - 1].size(); ++i) {
-                next[i + 1] += 2 * t[k - 1][i];
-            }
-            for (std::size_t i = 0; i < t[k - 2].size(); ++i) {
-                next[i] -= t[k - 2][i];
-            }
-            t.push_back(next);
-        }
-        for (const char* v : {"x", "y", "z"}) {
-            for (std::size_t i = 0; i < t[30].size(); ++i) {
-                if (t[30][i] != 0) {
-                    chebyshev << "+(" << t[30][i] << ")*" << v << "^" << i;
-                }
-            }
-        }
-    }
-    const Polynomial t30 = parse_polynomial(chebyshev.str(), ring);
+    const Polynomial t30 = parse_polynomial(test::chmutov_equation(30), ring);
     const Polynomial quartic = parse_polynomial("x^4 - 3/7*x*y^2*z + y^3 - 1/2", ring);
     const std::array<std::array<double, 3>, 4> origins{
         {{0.1234567, -1.2, 0.5}, {0.0, 0.25, -3.0}, {1e-5, 1e5, -0.75}, {0.0, 0.0, 0.0}}};

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -37,6 +38,20 @@ bench::SuiteSurface suite_surface(const std::string& name) {
         }
     }
     throw std::runtime_error("no suite surface " + name);
+}
+
+// The ray's chord of the clip sphere about the origin, inside the family's range of t
+// (nothing when the ray misses the sphere).
+std::optional<Interval> clip_chord(const Ray& ray, double radius, double t0, double width) {
+    const double a = glm::dot(ray.direction, ray.direction);
+    const double b = glm::dot(ray.origin, ray.direction);
+    const double c = glm::dot(ray.origin, ray.origin) - radius * radius;
+    const double discriminant = b * b - a * c;
+    if (!(discriminant > 0.0)) {
+        return std::nullopt;
+    }
+    const double root = std::sqrt(discriminant);
+    return Interval{std::max(t0, (-b - root) / a), std::min(t0 + width, (-b + root) / a)};
 }
 
 class GuidedSearch : public ::testing::TestWithParam<const char*> {};
@@ -68,18 +83,12 @@ TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
             for (int i = 0; i < kSize; ++i) {
                 const double x = i + 0.5;
                 const Ray ray = camera.ray(x, y);
-                // The ray's chord of the clip sphere, inside the family's range.
-                const double a = glm::dot(ray.direction, ray.direction);
-                const double b = glm::dot(ray.origin, ray.direction);
-                const double c = glm::dot(ray.origin, ray.origin) - radius * radius;
-                const double discriminant = b * b - a * c;
-                if (!(discriminant > 0.0)) {
+                const std::optional<Interval> chord = clip_chord(ray, radius, t0, width);
+                if (!chord) {
                     neighbour = NeighbourHint{};
                     continue;
                 }
-                const double root = std::sqrt(discriminant);
-                Interval interval{std::max(t0, (-b - root) / a),
-                                  std::min(t0 + width, (-b + root) / a)};
+                const Interval interval = *chord;
                 if (!(interval.hi > interval.lo)) {
                     continue;
                 }
@@ -173,16 +182,11 @@ TEST(BlurredFamily, RestsAndEveryAnswerKeepsTheContract) {
         for (int i = 0; i < kSize; ++i) {
             const double x = i + 0.5;
             const Ray ray = camera.ray(x, y);
-            const double a = glm::dot(ray.direction, ray.direction);
-            const double b = glm::dot(ray.origin, ray.direction);
-            const double c = glm::dot(ray.origin, ray.origin) - radius * radius;
-            const double discriminant = b * b - a * c;
-            if (!(discriminant > 0.0)) {
+            const std::optional<Interval> chord = clip_chord(ray, radius, t0, width);
+            if (!chord || !(chord->hi > chord->lo)) {
                 continue;
             }
-            const double root = std::sqrt(discriminant);
-            const Interval interval{std::max(t0, (-b - root) / a),
-                                    std::min(t0 + width, (-b + root) / a)};
+            const Interval interval = *chord;
             if (!(interval.hi > interval.lo)) {
                 continue;
             }

@@ -28,6 +28,7 @@
 #include "bench/surface_suite.h"
 #include "render/surface_tracer.h"
 #include "render/trace_method.h"
+#include "tests/support/chmutov.h"
 #include "tests/support/exact_ray_oracle.h"
 #include "tests/support/test_data.h"
 
@@ -384,28 +385,7 @@ TEST(OracleRays, GrazingRaysFromTheSurfaceFindTheNextRoot) {
 // rays of a small frame through the clip sphere, some entering it where the surface crosses
 // the sphere (F tiny at the start), each against the exact oracle.
 TEST(OracleRays, DegreeThirtyRaysAreRightThroughEveryTier) {
-    std::string equation;
-    {
-        std::vector<std::vector<long long>> t{{1}, {0, 1}};
-        for (int k = 2; k <= 30; ++k) {
-            std::vector<long long> next(static_cast<std::size_t>(k) + 1, 0);
-            for (std::size_t i = 0; i < t[k - 1].size(); ++i) {
-                next[i + 1] += 2 * t[k - 1][i];
-            }
-            for (std::size_t i = 0; i < t[k - 2].size(); ++i) {
-                next[i] -= t[k - 2][i];
-            }
-            t.push_back(next);
-        }
-        for (const char* v : {"x", "y", "z"}) {
-            for (std::size_t i = 0; i < t[30].size(); ++i) {
-                if (t[30][i] != 0) {
-                    equation +=
-                        "+(" + std::to_string(t[30][i]) + ")*" + v + "^" + std::to_string(i);
-                }
-            }
-        }
-    }
+    const std::string equation = test::chmutov_equation(30);
     const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
     const test::ExactRayOracle oracle(equation);
     const double radius = 1.2;

@@ -21,6 +21,7 @@
 #include "algebra/rational.h"
 #include "algebra/real_roots.h"
 #include "render/ray_family.h"
+#include "tests/support/chmutov.h"
 #include "tests/support/test_data.h"
 
 namespace locus::render {
@@ -124,30 +125,6 @@ std::vector<ExactCoefficient> exact_restriction(const std::string& equation,
     return result;
 }
 
-// Chmutov's T_n(x) + T_n(y) + T_n(z) as text (integer coefficients by the recurrence).
-std::string chebyshev_surface(int n) {
-    std::vector<std::vector<long long>> t{{1}, {0, 1}};
-    for (int k = 2; k <= n; ++k) {
-        std::vector<long long> next(static_cast<std::size_t>(k) + 1, 0);
-        for (std::size_t i = 0; i < t[k - 1].size(); ++i) {
-            next[i + 1] += 2 * t[k - 1][i];
-        }
-        for (std::size_t i = 0; i < t[k - 2].size(); ++i) {
-            next[i] -= t[k - 2][i];
-        }
-        t.push_back(next);
-    }
-    std::string text;
-    for (const char* v : {"x", "y", "z"}) {
-        for (std::size_t i = 0; i < t[n].size(); ++i) {
-            if (t[n][i] != 0) {
-                text += "+(" + std::to_string(t[n][i]) + ")*" + v + "^" + std::to_string(i);
-            }
-        }
-    }
-    return text;
-}
-
 TEST(LineRestrictor, MatchesDirectEvaluation) {
     for (int seed = 0; seed < test::seed_count(30); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
@@ -178,7 +155,7 @@ TEST(LineRestrictor, DoubleDoubleBallsHoldTheExactRestriction) {
     for (int trial = 0; trial < 60; ++trial) {
         std::string equation;
         if (trial % 10 == 9) {
-            equation = chebyshev_surface(30);
+            equation = test::chmutov_equation(30);
         } else {
             equation = random_equation(rng, 2 + trial % 9) +
                        "+12345678901234567891*x*y-98765432109876543211/3*z^2";
