@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "algebra/polynomial.h"
+#include "algebra/rational.h"
 
 namespace locus::algebra::detail {
 
@@ -53,38 +54,30 @@ void set_scaled(fmpz_t out, double v, int exponent) {
 
 // The linear polynomial a + b·t with integer a, b.
 struct IntegerLine {
-    fmpz_t a, b;
-    IntegerLine() {
-        fmpz_init(a);
-        fmpz_init(b);
-    }
-    ~IntegerLine() {
-        fmpz_clear(a);
-        fmpz_clear(b);
-    }
-    IntegerLine(const IntegerLine&) = delete;
-    IntegerLine& operator=(const IntegerLine&) = delete;
+    Integer a, b;
 };
 
 // p ← p·(a + b·t), in place.
 void multiply_by_line(fmpz_poly_t p, const IntegerLine& line, fmpz_t scratch) {
+    const fmpz* a = line.a.get();
+    const fmpz* b = line.b.get();
     const slong length = fmpz_poly_length(p);
     if (length == 0) {
         return;
     }
-    if (fmpz_is_zero(line.b)) {
-        fmpz_poly_scalar_mul_fmpz(p, p, line.a);
+    if (fmpz_is_zero(b)) {
+        fmpz_poly_scalar_mul_fmpz(p, p, a);
         return;
     }
     fmpz_poly_fit_length(p, length + 1);
     fmpz* c = p->coeffs;
-    fmpz_mul(c + length, c + length - 1, line.b);
+    fmpz_mul(c + length, c + length - 1, b);
     for (slong k = length - 1; k >= 1; --k) {
-        fmpz_mul(scratch, c + k - 1, line.b);
-        fmpz_mul(c + k, c + k, line.a);
+        fmpz_mul(scratch, c + k - 1, b);
+        fmpz_mul(c + k, c + k, a);
         fmpz_add(c + k, c + k, scratch);
     }
-    fmpz_mul(c, c, line.a);
+    fmpz_mul(c, c, a);
     _fmpz_poly_set_length(p, length + 1);
     _fmpz_poly_normalise(p);
 }
@@ -109,22 +102,14 @@ struct OwnedPolynomial {
     OwnedPolynomial& operator=(const OwnedPolynomial&) = delete;
 };
 
-struct OwnedInteger {
-    fmpz_t v;
-    OwnedInteger() { fmpz_init(v); }
-    ~OwnedInteger() { fmpz_clear(v); }
-    OwnedInteger(const OwnedInteger&) = delete;
-    OwnedInteger& operator=(const OwnedInteger&) = delete;
-};
-
 }  // namespace
 
 ExactLineRestriction::ExactLineRestriction(const Polynomial& f) {
     // The common denominator D > 0 of the coefficients: the integers are D·c.
-    OwnedInteger denominator;
-    fmpz_one(denominator.v);
+    Integer denominator;
+    fmpz_one(denominator.get());
     for (std::size_t i = 0; i < f.num_terms(); ++i) {
-        fmpz_lcm(denominator.v, denominator.v, fmpq_denref(f.coefficient(i).get()));
+        fmpz_lcm(denominator.get(), denominator.get(), fmpq_denref(f.coefficient(i).get()));
     }
     struct Entry {
         Term term;
@@ -148,7 +133,7 @@ ExactLineRestriction::ExactLineRestriction(const Polynomial& f) {
         fmpz* c = &coefficients_[k];
         fmpz_init(c);
         const fmpq* q = f.coefficient(entries[k].index).get();
-        fmpz_divexact(c, denominator.v, fmpq_denref(q));
+        fmpz_divexact(c, denominator.get(), fmpq_denref(q));
         fmpz_mul(c, c, fmpq_numref(q));
     }
 }
@@ -168,32 +153,35 @@ void ExactLineRestriction::restrict(const std::array<double, 3>& origin,
     const auto s = static_cast<ulong>(-e);
     std::array<IntegerLine, 3> lines;
     for (int i = 0; i < 3; ++i) {
-        set_scaled(lines[static_cast<std::size_t>(i)].a, origin[static_cast<std::size_t>(i)], e);
-        set_scaled(lines[static_cast<std::size_t>(i)].b, direction[static_cast<std::size_t>(i)], e);
+        set_scaled(lines[static_cast<std::size_t>(i)].a.get(), origin[static_cast<std::size_t>(i)],
+                   e);
+        set_scaled(lines[static_cast<std::size_t>(i)].b.get(),
+                   direction[static_cast<std::size_t>(i)], e);
     }
-    OwnedInteger scratch;
+    Integer scratch;
     OwnedPolynomial in_y, in_z;
     fmpz_poly_zero(out);
     // Horner in x over the groups of equal ex, in y over equal (ex, ey), in z over the terms.
     std::size_t k = 0;
     const std::size_t count = terms_.size();
     for (int ex = count > 0 ? terms_[0].ex : -1; ex >= 0; --ex) {
-        multiply_by_line(out, lines[0], scratch.v);
+        multiply_by_line(out, lines[0], scratch.get());
         if (k == count || terms_[k].ex != ex) {
             continue;
         }
         fmpz_poly_zero(in_y.p);
         for (int ey = terms_[k].ey; ey >= 0; --ey) {
-            multiply_by_line(in_y.p, lines[1], scratch.v);
+            multiply_by_line(in_y.p, lines[1], scratch.get());
             if (k == count || terms_[k].ex != ex || terms_[k].ey != ey) {
                 continue;
             }
             fmpz_poly_zero(in_z.p);
             for (int ez = terms_[k].ez; ez >= 0; --ez) {
-                multiply_by_line(in_z.p, lines[2], scratch.v);
+                multiply_by_line(in_z.p, lines[2], scratch.get());
                 if (k < count && terms_[k].ex == ex && terms_[k].ey == ey && terms_[k].ez == ez) {
                     add_shifted_constant(in_z.p, &coefficients_[k],
-                                         s * static_cast<ulong>(degree_ - ex - ey - ez), scratch.v);
+                                         s * static_cast<ulong>(degree_ - ex - ey - ez),
+                                         scratch.get());
                     ++k;
                 }
             }
@@ -206,24 +194,24 @@ void ExactLineRestriction::restrict(const std::array<double, 3>& origin,
 void compose_with_line(fmpz_poly_t out, const fmpz_poly_t p, const fmpz_t a, const fmpz_t b,
                        const fmpz_t d) {
     IntegerLine line;
-    fmpz_set(line.a, a);
-    fmpz_set(line.b, b);
-    OwnedInteger scratch, power;
+    fmpz_set(line.a.get(), a);
+    fmpz_set(line.b.get(), b);
+    Integer scratch, power;
     OwnedPolynomial result;
-    fmpz_one(power.v);
+    fmpz_one(power.get());
     // Σ p_i·d^(n − i)·(a + b·s)^i, by Horner.
     for (slong i = fmpz_poly_degree(p); i >= 0; --i) {
-        multiply_by_line(result.p, line, scratch.v);
-        fmpz_mul(scratch.v, p->coeffs + i, power.v);
-        if (!fmpz_is_zero(scratch.v)) {
+        multiply_by_line(result.p, line, scratch.get());
+        fmpz_mul(scratch.get(), p->coeffs + i, power.get());
+        if (!fmpz_is_zero(scratch.get())) {
             if (fmpz_poly_length(result.p) == 0) {
-                fmpz_poly_set_fmpz(result.p, scratch.v);
+                fmpz_poly_set_fmpz(result.p, scratch.get());
             } else {
-                fmpz_add(result.p->coeffs, result.p->coeffs, scratch.v);
+                fmpz_add(result.p->coeffs, result.p->coeffs, scratch.get());
                 _fmpz_poly_normalise(result.p);
             }
         }
-        fmpz_mul(power.v, power.v, d);
+        fmpz_mul(power.get(), power.get(), d);
     }
     fmpz_poly_swap(out, result.p);
 }
