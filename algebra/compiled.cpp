@@ -244,8 +244,9 @@ struct PowerTables {
 // cost a degree-30 frame a sixth of its time. So the function is also compiled for processors
 // with FMA and chosen when the program loads (the roundings are the same: -ffp-contract=off,
 // and std::fma is exact-then-rounded either way). GCC only: clang 14 emits the clones of a
-// member function without the symbol other files call (the fuzz build failed to link).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// member function without the symbol other files call (the fuzz build failed to link); and
+// glibc only, whose dynamic loader resolves the choice (an ifunc).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__)
 __attribute__((target_clones("fma", "default")))
 #endif
 ValueEnclosure

@@ -147,7 +147,7 @@ CompiledPolynomial compile_surface(const Polynomial& f);
 // The certified first root of F(t) = f(o + t·d) with lo ≤ t ≤ hi, where o, d, lo, hi are read
 // exactly as the rationals their doubles denote. F is computed in integers (up to a positive
 // factor: exact_line_restriction.h), made square-free, and its roots isolated by Descartes'
-// rule with bisection (Collins–Akritas); the first one is refined by exact bisection until its
+// rule with bisection (Collins–Akritas); the first one is refined on exact signs until its
 // enclosure rounds to one or two adjacent doubles, so `t` is within one ulp of the true root. Roots
 // of every multiplicity count. With `lo_open`, a root at exactly lo is skipped (`locus trace` asks
 // for t > 0).

@@ -216,8 +216,12 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
         s_from_piece(s.get(), c, k, x_q.get());
         t_from_s(t, s.get(), lo, width);
     };
+    // Unreachable for finite doubles: the enclosure at least halves every two steps, and about
+    // 2 200 halvings take any interval of doubles below 2^-8 of an ulp (2^1024 down to 2^-1082).
+    constexpr int kIterations = 6000;
+    Rational gap_q;
     double result = NAN;
-    for (int iteration = 0; iteration < 4000 && std::isnan(result); ++iteration) {
+    for (int iteration = 0; iteration < kIterations && std::isnan(result); ++iteration) {
         // Close to one ulp by the doubles' estimate: the exact test of the old bisection.
         fmpz_sub(gap_width, b, a);
         slong e = 0;
@@ -236,15 +240,21 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
         };
         const double largest = std::max(t_estimate(a), t_estimate(b));
         const double ulp = std::nextafter(largest, INFINITY) - largest;
-        if (!(t_span > 8.0 * ulp) || iteration % 64 == 63 || iteration + 1 == 4000) {
+        if (!(t_span > 8.0 * ulp) || iteration % 64 == 63 || iteration + 1 == kIterations) {
             t_of(a, t_lower.get());
             t_of(b, t_upper.get());
             const double lower = nearest_double(t_lower.get());
             const double upper = nearest_double(t_upper.get());
+            // Done when both ends round to the same double, or (a root on a rounding boundary)
+            // when the enclosure is below 2^-8 of an ulp — compared exactly, since a quarter of
+            // a subnormal's ulp is no double.
             fmpq_sub(mid.get(), t_upper.get(), t_lower.get());
-            const double gap = std::nextafter(std::abs(lower), INFINITY) - std::abs(lower);
-            if (lower == upper || std::abs(fmpq_get_d(mid.get())) < gap / 256 ||
-                iteration + 1 == 4000) {
+            fmpq_abs(mid.get(), mid.get());
+            set_exact_double(gap_q.get(),
+                             std::nextafter(std::abs(lower), INFINITY) - std::abs(lower));
+            fmpq_div_2exp(gap_q.get(), gap_q.get(), 8);
+            if (lower == upper || fmpq_cmp(mid.get(), gap_q.get()) < 0 ||
+                iteration + 1 == kIterations) {
                 fmpq_add(mid.get(), t_lower.get(), t_upper.get());
                 fmpq_div_2exp(mid.get(), mid.get(), 1);
                 result = nearest_double(mid.get());

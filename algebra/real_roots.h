@@ -14,9 +14,9 @@
 namespace locus::algebra {
 
 // The smallest root r of the square-free, non-zero polynomial p with lo ≤ r ≤ hi (lo < r with
-// `lo_open`), or std::nullopt when there is none. The root is refined by exact bisection until
-// the ends of its enclosure round to the same or to adjacent doubles, so the result is within
-// one ulp of r. Precondition: lo < hi.
+// `lo_open`), or std::nullopt when there is none. The root is refined by regula falsi on exact
+// signs (with bisection steps) until the ends of its enclosure round to the same or to adjacent
+// doubles, so the result is within one ulp of r. Precondition: lo < hi.
 std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, const fmpq_t hi,
                                       bool lo_open);
 

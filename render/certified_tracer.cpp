@@ -123,8 +123,9 @@ RootResult CertifiedTracer::exact(const Ray& ray, Interval interval, int work) c
 
 RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double tolerance,
                                    int work) const {
-    // Tier 1: the ball itself. A bracket of σ-width w maps to t-width w·(t_hi − t_lo), within
-    // m of exact at either end (the two ends' margins, and the rounding of the map).
+    // Tiers 1–2: the ball itself (in doubles or double-double). A bracket of σ-width w maps
+    // to t-width w·(t_hi − t_lo), within m of exact at either end (the two ends' margins, and
+    // the rounding of the map).
     const double span = piece.t_hi - piece.t_lo;
     const double m = 2.0 * piece.margin +
                      4.0 * kUnit * std::max(std::abs(piece.t_lo), std::abs(piece.t_hi)) + kTiny;
@@ -139,7 +140,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
         return hit(std::clamp(at(bracket.estimate), at(bracket.lo), at(bracket.hi)), work,
                    Decision::floating);
     }
-    // Tier 2: signs of F at points of the ray, evaluated from f at the point with a running
+    // Tier 3: signs of F at points of the ray, evaluated from f at the point with a running
     // error bound in doubles — the error of the point's own terms, far below the ball's where
     // the ball covers a long segment or a whole frame — and then in double-double. The root is
     // the only one in the exact range [lower, upper]; a point left of it has sign_at_lo, right
@@ -229,7 +230,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
                                                              : Decision::floating);
         }
     }
-    // Tier 3: exact arithmetic on the range that holds the root (and nothing before it).
+    // Tier 4: exact arithmetic on the range that holds the root (and nothing before it).
     return exact(ray, {std::nextafter(lower, -INFINITY), std::nextafter(upper, INFINITY)}, work);
 }
 
@@ -320,7 +321,9 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
                 return exact(ray, interval, work);
             }
             if (!segment.precise) {
-                stack[top++] = {piece_b, b, false};
+                if (piece_b < b) {
+                    stack[top++] = {piece_b, b, false};
+                }
                 stack[top++] = {lo, piece_b, true};
                 continue;
             }
@@ -329,7 +332,9 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
                 return near_start;
             }
             work = near_start.work;
-            stack[top++] = {piece_b, b, true};
+            if (piece_b < b) {
+                stack[top++] = {piece_b, b, true};
+            }
             continue;
         }
         // Undecided elsewhere: a piece less than half the segment is expanded again about

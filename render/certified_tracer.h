@@ -51,7 +51,7 @@ inline constexpr double kRenderTolerance = 1e-9;
 struct NeighbourHint {
     double t = std::numeric_limits<double>::quiet_NaN();
     double reach = 0.0;
-    int family_failures = 0;  // undecided rays in a row
+    int family_failures = 0;  // searches of the ball in a row that decided nothing
     int family_rest = 0;      // rays still to trace alone
 };
 inline constexpr int kFamilyFailuresBeforeRest = 8;

@@ -186,6 +186,58 @@ TEST(FirstRealRoot, Wilkinson) {
     fmpz_poly_clear(factor);
 }
 
+// Roots at the edges of the doubles: exactly halfway between the two smallest subnormals (a
+// rounding boundary where a quarter ulp is no double: the enclosure must still end), near 2^1000,
+// and on intervals as wide as the doubles go. Either neighbour of a boundary root is right.
+TEST(FirstRealRoot, RootsAtTheEdgesOfTheDoubles) {
+    fmpz_poly_t p;
+    fmpz_poly_init(p);
+    fmpq_t lo, hi;
+    fmpq_init(lo);
+    fmpq_init(hi);
+    fmpz_t c;
+    fmpz_init(c);
+    // 2^1075·t − 3: the root 1.5·2^-1074.
+    fmpz_one(c);
+    fmpz_mul_2exp(c, c, 1075);
+    fmpz_poly_set_coeff_fmpz(p, 1, c);
+    fmpz_poly_set_coeff_si(p, 0, -3);
+    set_exact_double(lo, 0.0);
+    set_exact_double(hi, 1.0);
+    const std::optional<double> tiny = first_real_root(p, lo, hi, true);
+    ASSERT_TRUE(tiny.has_value());
+    EXPECT_TRUE(*tiny == std::ldexp(1.0, -1074) || *tiny == std::ldexp(1.0, -1073)) << *tiny;
+    // t − (2^1000 + 2^950): a double itself, found from an interval of width 2^1023.
+    fmpz_poly_zero(p);
+    fmpz_one(c);
+    fmpz_mul_2exp(c, c, 1000);
+    fmpz_t small;
+    fmpz_init(small);
+    fmpz_one(small);
+    fmpz_mul_2exp(small, small, 950);
+    fmpz_add(c, c, small);
+    fmpz_neg(c, c);
+    fmpz_poly_set_coeff_fmpz(p, 0, c);
+    fmpz_poly_set_coeff_si(p, 1, 1);
+    set_exact_double(lo, -std::ldexp(1.0, 1022));
+    set_exact_double(hi, std::ldexp(1.0, 1023));
+    EXPECT_EQ(first_real_root(p, lo, hi, false), std::ldexp(1.0, 1000) + std::ldexp(1.0, 950));
+    // 3t² − 1 over [−1e300, 1e300]: −1/√3 first, to the nearest double.
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, 2, 3);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    set_exact_double(lo, -1e300);
+    set_exact_double(hi, 1e300);
+    const std::optional<double> third = first_real_root(p, lo, hi, false);
+    ASSERT_TRUE(third.has_value());
+    EXPECT_NEAR(*third, -1.0 / std::sqrt(3.0), 2.3e-16);
+    fmpz_clear(small);
+    fmpz_clear(c);
+    fmpq_clear(lo);
+    fmpq_clear(hi);
+    fmpz_poly_clear(p);
+}
+
 // The refinement (regula falsi with bisection, exact signs at dyadic points) on roots nobody
 // placed: random products of linear factors b·t − a and of t² − m, at every scale from 2^-40 to
 // 2^40. The first root in [lo, hi] is known exactly — a rational a/b, whose nearest double
