@@ -165,6 +165,7 @@ void F4Engine::reduce_rows(const std::vector<RowSpec>& rows,
     for (std::size_t r = 0; r < rows.size(); ++r) {
         SparseRow& row = partial[r];
         if (!row.columns.empty() && !fresh.empty()) {
+            check_deadline();
             for (std::size_t k = 0; k < row.columns.size(); ++k) {
                 acc[row.columns[k]] = row.coefficients[k];
             }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 
 #include <random>
 #include <sstream>
@@ -366,6 +367,19 @@ TEST(Modular, TwoThreadsGiveTheSameF4StepsAsOne) {
             }
         }
     }
+}
+
+// A deadline that passes while F4's rows are reduced on two threads stops the run with Timeout,
+// thrown from a worker and carried to the caller (cyclic-7's larger steps take longer than the
+// deadline left).
+TEST(Modular, F4OnTwoThreadsStopsAtItsDeadline) {
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic7.ideal"));
+    const MonomialLayout& layout = ideal.ring->layout();
+    modular::F4Options options;
+    options.threads = [] { return 2; };
+    options.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(30);
+    EXPECT_THROW(modular::f4(modulo(ideal.generators, 65521u), layout, {65521u}, options), Timeout);
 }
 
 // Eleven primes below 2^31 from `start` down (not a multiple of 8: the last lanes repeat one).
