@@ -44,10 +44,15 @@ bool Shader::is_occluded(const Ray& ray, double t_max, int& work) const {
         if (interval.is_empty()) {
             continue;
         }
-        const RootResult hit = first_hit_trimmed(
-            surface.trim, ray, interval, kTrimTolerance * scale_,
-            surface.tracer->polynomial().degree(),
-            [&](Interval within) { return surface.tracer->first_hit(ray, within); });
+        // A trimmed patch needs each root's place (is it on the patch?); a whole surface only
+        // whether there is one.
+        const RootResult hit =
+            surface.trim == nullptr
+                ? surface.tracer->occluded(ray, interval)
+                : first_hit_trimmed(surface.trim, ray, interval, kTrimTolerance * scale_,
+                                    surface.tracer->polynomial().degree(), [&](Interval within) {
+                                        return surface.tracer->first_hit(ray, within);
+                                    });
         work += hit.work;
         if (hit.status == RootStatus::hit) {
             return true;

@@ -86,6 +86,17 @@ RootResult SurfaceTracer::first_hit(const Ray& world_ray, Interval interval, dou
     return on_restriction(computed, interval, ray, hint);
 }
 
+RootResult SurfaceTracer::occluded(const Ray& world_ray, Interval interval) const {
+    if (method_ != TraceMethod::certified) {
+        return first_hit(world_ray, interval);
+    }
+    if (interval.is_empty()) {
+        return RootResult{};
+    }
+    // An unbounded tolerance: the isolating piece's bracket is answer enough.
+    return certified_.first_hit(frame_.to_local(world_ray), interval, INFINITY);
+}
+
 RootResult SurfaceTracer::first_hit(const Ray& world_ray, Interval interval,
                                     const RayRestriction& restriction, double hint) const {
     const Ray ray = frame_.to_local(world_ray);

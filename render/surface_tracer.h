@@ -54,6 +54,10 @@ class SurfaceTracer {
     // that use one (SturmRootFinder) are faster with it, and the answer is the same.
     RootResult first_hit(const Ray& ray, Interval interval,
                          double hint = std::numeric_limits<double>::quiet_NaN()) const;
+    // Whether f has a root in `interval`, for shadow and occlusion rays: the answer of
+    // first_hit, except that a hit's t is only known to lie in the closed interval — the
+    // certified method stops once a root is isolated, without placing it to the tolerance.
+    RootResult occluded(const Ray& ray, Interval interval) const;
     // The same with the restriction of f to this ray already known (a RayFamily's row); the
     // methods that do not work on a restriction ignore it.
     RootResult first_hit(const Ray& ray, Interval interval, const RayRestriction& restriction,

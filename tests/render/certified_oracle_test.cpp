@@ -304,6 +304,19 @@ TEST_P(OracleRays, CertifiedAnswersEveryRayRight) {
                 ADD_FAILURE() << message.str();
             }
         }
+        // The shadows' query: whether there is a root in (0, t_max], the t anywhere in it.
+        const RootResult occluded = tracers[TraceMethod::certified]->occluded(
+            {to_vec(ray.origin), to_vec(ray.direction)}, {0.0, ray.t_max});
+        ASSERT_NE(occluded.status, RootStatus::unknown);
+        const bool occluded_hit = occluded.status == RootStatus::hit;
+        EXPECT_TRUE(test::ExactRayOracle::is_right(exact_restriction, ray.t_max, occluded_hit,
+                                                   occluded_hit ? ray.t_max : 0.0, INFINITY))
+            << c.surface.name << " (" << ray.kind << "): occluded answered "
+            << (occluded_hit ? "hit" : "miss");
+        if (occluded_hit) {
+            EXPECT_GE(occluded.t, 0.0) << c.surface.name;
+            EXPECT_LE(occluded.t, ray.t_max) << c.surface.name;
+        }
     }
     if (const char* path = std::getenv("LOCUS_ORACLE_CSV")) {
         const std::lock_guard<std::mutex> lock(csv_mutex);
