@@ -1,7 +1,5 @@
 #include "algebra/compiled.h"
 
-#include <flint/fmpq_poly.h>
-
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -368,33 +366,27 @@ CompiledPolynomial compile_surface(const Polynomial& f) {
 ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
                            const Point3& direction, double lo, double hi, bool lo_open) {
     // F(t) = f(o + t·d) up to a positive factor, in integers (exact_line_restriction.h).
-    fmpz_poly_t restriction, derivative, common;
-    fmpz_poly_init(restriction);
-    fmpz_poly_init(derivative);
-    fmpz_poly_init(common);
-    f.exact_->on_line.restrict(origin, direction, restriction);
+    detail::FmpzPoly restriction, derivative, common;
+    f.exact_->on_line.restrict(origin, direction, restriction.p);
     ExactRoot result;
-    if (fmpz_poly_is_zero(restriction)) {
+    if (fmpz_poly_is_zero(restriction.p)) {
         result.status = ExactRoot::Status::identically_zero;
         result.t = lo;
     } else {
         // Square-free part F / gcd(F, F'): every distinct root, whatever its multiplicity.
-        fmpz_poly_derivative(derivative, restriction);
-        fmpz_poly_gcd(common, restriction, derivative);
-        fmpz_poly_div(restriction, restriction, common);
+        fmpz_poly_derivative(derivative.p, restriction.p);
+        fmpz_poly_gcd(common.p, restriction.p, derivative.p);
+        fmpz_poly_div(restriction.p, restriction.p, common.p);
         Rational lo_exact, hi_exact;
         set_exact_double(lo_exact.get(), lo);
         set_exact_double(hi_exact.get(), hi);
         const std::optional<double> root =
-            first_real_root(restriction, lo_exact.get(), hi_exact.get(), lo_open);
+            first_real_root(restriction.p, lo_exact.get(), hi_exact.get(), lo_open);
         if (root) {
             result.status = ExactRoot::Status::hit;
             result.t = *root;
         }
     }
-    fmpz_poly_clear(restriction);
-    fmpz_poly_clear(derivative);
-    fmpz_poly_clear(common);
     return result;
 }
 

@@ -1,11 +1,9 @@
 #include "algebra/exact_line_restriction.h"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 
 #include "algebra/polynomial.h"
-#include "algebra/rational.h"
 
 namespace locus::algebra::detail {
 
@@ -82,25 +80,15 @@ void multiply_by_line(fmpz_poly_t p, const IntegerLine& line, fmpz_t scratch) {
     _fmpz_poly_normalise(p);
 }
 
-// p ← p + v·2^shift.
-void add_shifted_constant(fmpz_poly_t p, const fmpz_t v, ulong shift, fmpz_t scratch) {
-    fmpz_mul_2exp(scratch, v, shift);
+// p ← p + v.
+void add_constant(fmpz_poly_t p, const fmpz_t v) {
     if (fmpz_poly_length(p) == 0) {
-        fmpz_poly_set_fmpz(p, scratch);
+        fmpz_poly_set_fmpz(p, v);
         return;
     }
-    fmpz_add(p->coeffs, p->coeffs, scratch);
+    fmpz_add(p->coeffs, p->coeffs, v);
     _fmpz_poly_normalise(p);
 }
-
-// A FLINT polynomial that clears itself.
-struct OwnedPolynomial {
-    fmpz_poly_t p;
-    OwnedPolynomial() { fmpz_poly_init(p); }
-    ~OwnedPolynomial() { fmpz_poly_clear(p); }
-    OwnedPolynomial(const OwnedPolynomial&) = delete;
-    OwnedPolynomial& operator=(const OwnedPolynomial&) = delete;
-};
 
 }  // namespace
 
@@ -130,17 +118,10 @@ ExactLineRestriction::ExactLineRestriction(const Polynomial& f) {
     coefficients_.resize(entries.size());
     for (std::size_t k = 0; k < entries.size(); ++k) {
         terms_.push_back(entries[k].term);
-        fmpz* c = &coefficients_[k];
-        fmpz_init(c);
+        fmpz* c = coefficients_[k].get();
         const fmpq* q = f.coefficient(entries[k].index).get();
         fmpz_divexact(c, denominator.get(), fmpq_denref(q));
         fmpz_mul(c, c, fmpq_numref(q));
-    }
-}
-
-ExactLineRestriction::~ExactLineRestriction() {
-    for (fmpz& c : coefficients_) {
-        fmpz_clear(&c);
     }
 }
 
@@ -159,7 +140,7 @@ void ExactLineRestriction::restrict(const std::array<double, 3>& origin,
                    direction[static_cast<std::size_t>(i)], e);
     }
     Integer scratch;
-    OwnedPolynomial in_y, in_z;
+    FmpzPoly in_y, in_z;
     fmpz_poly_zero(out);
     // Horner in x over the groups of equal ex, in y over equal (ex, ey), in z over the terms.
     std::size_t k = 0;
@@ -179,9 +160,9 @@ void ExactLineRestriction::restrict(const std::array<double, 3>& origin,
             for (int ez = terms_[k].ez; ez >= 0; --ez) {
                 multiply_by_line(in_z.p, lines[2], scratch.get());
                 if (k < count && terms_[k].ex == ex && terms_[k].ey == ey && terms_[k].ez == ez) {
-                    add_shifted_constant(in_z.p, &coefficients_[k],
-                                         s * static_cast<ulong>(degree_ - ex - ey - ez),
-                                         scratch.get());
+                    fmpz_mul_2exp(scratch.get(), coefficients_[k].get(),
+                                  s * static_cast<ulong>(degree_ - ex - ey - ez));
+                    add_constant(in_z.p, scratch.get());
                     ++k;
                 }
             }
@@ -197,20 +178,13 @@ void compose_with_line(fmpz_poly_t out, const fmpz_poly_t p, const fmpz_t a, con
     fmpz_set(line.a.get(), a);
     fmpz_set(line.b.get(), b);
     Integer scratch, power;
-    OwnedPolynomial result;
+    FmpzPoly result;
     fmpz_one(power.get());
     // Σ p_i·d^(n − i)·(a + b·s)^i, by Horner.
     for (slong i = fmpz_poly_degree(p); i >= 0; --i) {
         multiply_by_line(result.p, line, scratch.get());
         fmpz_mul(scratch.get(), p->coeffs + i, power.get());
-        if (!fmpz_is_zero(scratch.get())) {
-            if (fmpz_poly_length(result.p) == 0) {
-                fmpz_poly_set_fmpz(result.p, scratch.get());
-            } else {
-                fmpz_add(result.p->coeffs, result.p->coeffs, scratch.get());
-                _fmpz_poly_normalise(result.p);
-            }
-        }
+        add_constant(result.p, scratch.get());
         fmpz_mul(power.get(), power.get(), d);
     }
     fmpz_poly_swap(out, result.p);

@@ -17,19 +17,31 @@
 #include <array>
 #include <vector>
 
+#include "algebra/rational.h"
+
 namespace locus::algebra {
 
 class Polynomial;
 
 namespace detail {
 
+// An integer polynomial that clears itself (the exact tier's polynomials: here, in
+// real_roots.cpp and in exact_first_root).
+struct FmpzPoly {
+    fmpz_poly_t p;
+    FmpzPoly() { fmpz_poly_init(p); }
+    FmpzPoly(const FmpzPoly& o) {
+        fmpz_poly_init(p);
+        fmpz_poly_set(p, o.p);
+    }
+    FmpzPoly& operator=(const FmpzPoly&) = delete;
+    ~FmpzPoly() { fmpz_poly_clear(p); }
+};
+
 class ExactLineRestriction {
   public:
     // f in a ring whose variables are x, y, z in that order (compile_surface's ring).
     explicit ExactLineRestriction(const Polynomial& f);
-    ~ExactLineRestriction();
-    ExactLineRestriction(const ExactLineRestriction&) = delete;
-    ExactLineRestriction& operator=(const ExactLineRestriction&) = delete;
 
     // out = c·f(o + t·d) for some rational c > 0; o and d finite doubles, read exactly.
     void restrict(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
@@ -42,7 +54,7 @@ class ExactLineRestriction {
         int ex, ey, ez;
     };
     std::vector<Term> terms_;
-    std::vector<fmpz> coefficients_;
+    std::vector<Integer> coefficients_;
     int degree_ = 0;
 };
 

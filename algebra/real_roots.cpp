@@ -57,17 +57,7 @@ double nearest_double(const fmpq_t t) {
 
 namespace {
 
-// RAII holder for the FLINT polynomials used below (scalars are algebra::Rational).
-struct IntPoly {
-    fmpz_poly_t p;
-    IntPoly() { fmpz_poly_init(p); }
-    IntPoly(const IntPoly& o) {
-        fmpz_poly_init(p);
-        fmpz_poly_set(p, o.p);
-    }
-    IntPoly& operator=(const IntPoly&) = delete;
-    ~IntPoly() { fmpz_poly_clear(p); }
-};
+using IntPoly = detail::FmpzPoly;
 
 int sign_variations(const fmpz_poly_t p) {
     int variations = 0;
@@ -191,13 +181,13 @@ double secant_fraction(const Magnitude& fa, const Magnitude& fb) {
 double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
               const fmpq_t width) {
     const slong n = fmpz_poly_degree(poly);
-    fmpz_t a, b, x, value, scratch, gap_width;
-    fmpz_init(a);
-    fmpz_init_set_ui(b, 1);
-    fmpz_init(x);
-    fmpz_init(value);
-    fmpz_init(scratch);
-    fmpz_init(gap_width);
+    Integer a_owned(0), b_owned(1), x_owned, value_owned, scratch_owned, gap_width_owned;
+    fmpz* a = a_owned.get();
+    fmpz* b = b_owned.get();
+    fmpz* x = x_owned.get();
+    fmpz* value = value_owned.get();
+    fmpz* scratch = scratch_owned.get();
+    fmpz* gap_width = gap_width_owned.get();
     ulong level = 0;  // the enclosure is [a, b]/2^level
     scaled_value_at(value, poly, a, 0, scratch);
     const int sign_at_a = fmpz_sgn(value);
@@ -222,7 +212,7 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
     Rational gap_q;
     double result = NAN;
     for (int iteration = 0; iteration < kIterations && std::isnan(result); ++iteration) {
-        // Close to one ulp by the doubles' estimate: the exact test of the old bisection.
+        // Close to one ulp by the doubles' estimate: then the exact test.
         fmpz_sub(gap_width, b, a);
         slong e = 0;
         const double span = fmpz_get_d_2exp(&e, gap_width);
@@ -309,12 +299,6 @@ double refine(const fmpz_poly_t poly, const fmpz_t c, ulong k, const fmpq_t lo,
         }
         bisect_next = bits != 1 && kept_fraction > 0.5;
     }
-    fmpz_clear(a);
-    fmpz_clear(b);
-    fmpz_clear(x);
-    fmpz_clear(value);
-    fmpz_clear(scratch);
-    fmpz_clear(gap_width);
     return result;
 }
 
@@ -327,17 +311,11 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
     // q(s) ∝ p(lo + width·s) = p((lo_n·w_d + w_n·lo_d·s)/(lo_d·w_d)): the interval becomes [0, 1].
     IntPoly q;
     {
-        fmpz_t a, b, d;
-        fmpz_init(a);
-        fmpz_init(b);
-        fmpz_init(d);
-        fmpz_mul(a, fmpq_numref(lo), fmpq_denref(width.get()));
-        fmpz_mul(b, fmpq_numref(width.get()), fmpq_denref(lo));
-        fmpz_mul(d, fmpq_denref(lo), fmpq_denref(width.get()));
-        detail::compose_with_line(q.p, p, a, b, d);
-        fmpz_clear(a);
-        fmpz_clear(b);
-        fmpz_clear(d);
+        Integer a, b, d;
+        fmpz_mul(a.get(), fmpq_numref(lo), fmpq_denref(width.get()));
+        fmpz_mul(b.get(), fmpq_numref(width.get()), fmpq_denref(lo));
+        fmpz_mul(d.get(), fmpq_denref(lo), fmpq_denref(width.get()));
+        detail::compose_with_line(q.p, p, a.get(), b.get(), d.get());
     }
     fmpz_poly_primitive_part(q.p, q.p);
 

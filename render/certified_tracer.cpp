@@ -380,14 +380,14 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     // The neighbour's root and reach in σ (NaN when it had none: no guess).
     const Isolation isolation = isolate_first_root_near(
         ball, kFamilyDepth, s0, s_hi, (guess.t - t0) / width, guess.reach / width);
-    if (isolation.kind == Isolation::Kind::no_root) {
-        return miss(isolation.work);
-    }
     next.family_failures =
         isolation.kind == Isolation::Kind::undecided ? guess.family_failures + 1 : 0;
     if (next.family_failures == kFamilyFailuresBeforeRest) {
         next.family_failures = 0;
         next.family_rest = kFamilyRest;
+    }
+    if (isolation.kind == Isolation::Kind::no_root) {
+        return miss(isolation.work);
     }
     if (isolation.kind == Isolation::Kind::undecided) {
         RootResult alone = first_hit(ray, interval, tolerance);

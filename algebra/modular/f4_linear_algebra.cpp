@@ -99,12 +99,17 @@ void F4Engine::make_monic(SparseRow& row) const {
     }
 }
 
-std::optional<SparseRow> F4Engine::reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
-                                              const Pivots& pivots, std::size_t rows) const {
+SparseRow F4Engine::reduce_loaded_row(PivotRow row, std::vector<std::uint64_t>& acc,
+                                      const Pivots& pivots, std::size_t rows) const {
     for (std::size_t k = 0; k < row.size; ++k) {
         acc[row.columns[k]] = row.coefficients[k];
     }
-    SparseRow reduced = reduce_dense(acc, row.columns[0], pivots, rows);
+    return reduce_dense(acc, row.columns[0], pivots, rows);
+}
+
+std::optional<SparseRow> F4Engine::reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
+                                              const Pivots& pivots, std::size_t rows) const {
+    SparseRow reduced = reduce_loaded_row(row, acc, pivots, rows);
     if (reduced.columns.empty()) {
         return std::nullopt;
     }
@@ -120,56 +125,43 @@ void F4Engine::reduce_rows(const std::vector<RowSpec>& rows,
     const int threads = options_.threads ? std::max(1, options_.threads()) : 1;
     // Below this many rows a step is not worth the threads' start.
     constexpr std::size_t kRowsForThreads = 32;
-    if (threads == 1 || rows.size() < kRowsForThreads) {
-        std::vector<std::uint64_t> acc(width, 0);
-        std::vector<std::uint32_t> row_columns;
-        for (std::size_t r = 0; r < rows.size(); ++r) {
-            check_deadline();
-            row_columns = columns_of(rows[r], column_of);
-            std::optional<SparseRow> reduced =
-                reduce_row(row_view(rows[r], row_columns), acc, pivots, total_rows);
-            if (!reduced) {
-                ++stats_.zero_rows;
-                continue;
-            }
-            useful.push_back(r);
-            fresh.push_back(std::move(*reduced));
-            pivots.add(view_of(fresh.back()));
-        }
-        return;
+    const bool side_by_side = threads > 1 && rows.size() >= kRowsForThreads;
+    // With threads, by the reducers alone first, side by side (the pivots hold only the
+    // reducers until the pass in order; each thread has its own accumulator).
+    std::vector<SparseRow> partial;
+    if (side_by_side) {
+        partial.resize(rows.size());
+        tbb::enumerable_thread_specific<std::vector<std::uint64_t>> accumulators(
+            [width] { return std::vector<std::uint64_t>(width, 0); });
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size(), 8),
+                              [&](const tbb::blocked_range<std::size_t>& range) {
+                                  std::vector<std::uint64_t>& acc = accumulators.local();
+                                  for (std::size_t r = range.begin(); r < range.end(); ++r) {
+                                      check_deadline();
+                                      const std::vector<std::uint32_t> row_columns =
+                                          columns_of(rows[r], column_of);
+                                      partial[r] = reduce_loaded_row(row_view(rows[r], row_columns),
+                                                                     acc, pivots, total_rows);
+                                  }
+                              });
+        });
     }
-    // By the reducers alone, side by side (the pivots hold only the reducers until the second
-    // pass; each thread has its own accumulator).
-    std::vector<SparseRow> partial(rows.size());
-    tbb::enumerable_thread_specific<std::vector<std::uint64_t>> accumulators(
-        [width] { return std::vector<std::uint64_t>(width, 0); });
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, rows.size(), 8),
-            [&](const tbb::blocked_range<std::size_t>& range) {
-                std::vector<std::uint64_t>& acc = accumulators.local();
-                for (std::size_t r = range.begin(); r < range.end(); ++r) {
-                    check_deadline();
-                    const std::vector<std::uint32_t> row_columns = columns_of(rows[r], column_of);
-                    const PivotRow row = row_view(rows[r], row_columns);
-                    for (std::size_t k = 0; k < row.size; ++k) {
-                        acc[row.columns[k]] = row.coefficients[k];
-                    }
-                    partial[r] = reduce_dense(acc, row.columns[0], pivots, total_rows);
-                }
-            });
-    });
-    // Then in order by the new rows (and the reducers again, for what the new rows bring).
+    // In order, by the reducers and the new rows (after the first pass: by what the new rows
+    // bring, and the reducers again for that).
     std::vector<std::uint64_t> acc(width, 0);
+    std::vector<std::uint32_t> row_columns;
     for (std::size_t r = 0; r < rows.size(); ++r) {
-        SparseRow& row = partial[r];
-        if (!row.columns.empty() && !fresh.empty()) {
-            check_deadline();
-            for (std::size_t k = 0; k < row.columns.size(); ++k) {
-                acc[row.columns[k]] = row.coefficients[k];
-            }
-            row = reduce_dense(acc, row.columns[0], pivots, total_rows);
+        check_deadline();
+        SparseRow row;
+        if (!side_by_side) {
+            row_columns = columns_of(rows[r], column_of);
+            row = reduce_loaded_row(row_view(rows[r], row_columns), acc, pivots, total_rows);
+        } else if (!partial[r].columns.empty() && !fresh.empty()) {
+            row = reduce_loaded_row(view_of(partial[r]), acc, pivots, total_rows);
+        } else {
+            row = std::move(partial[r]);
         }
         if (row.columns.empty()) {
             ++stats_.zero_rows;

@@ -174,7 +174,7 @@ TEST(BlurredFamily, RestsAndEveryAnswerKeepsTheContract) {
     ASSERT_TRUE(family.certified());
     const double t0 = family.t_start(), width = family.t_width();
     auto row = std::make_unique<CertifiedRayFamily::Row>();
-    int traced = 0, searched = 0, rested = 0, rests_begun = 0;
+    int searched = 0, rested = 0, rests_begun = 0;
     for (const int j : {kSize / 2, kSize / 3}) {
         const double y = j + 0.5;
         family.expand_row(y, *row);
@@ -202,7 +202,6 @@ TEST(BlurredFamily, RestsAndEveryAnswerKeepsTheContract) {
             const NeighbourHint before = neighbour;
             const RootResult r =
                 tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance, &neighbour);
-            ++traced;
             if (before.family_rest > 0) {
                 ++rested;
                 EXPECT_EQ(neighbour.family_rest, before.family_rest - 1);
@@ -230,7 +229,20 @@ TEST(BlurredFamily, RestsAndEveryAnswerKeepsTheContract) {
     EXPECT_GE(rests_begun, 3);
     EXPECT_GT(rested, 2 * kFamilyRest);
     EXPECT_GT(searched, 2 * kFamilyFailuresBeforeRest);
-    EXPECT_EQ(traced, rested + searched);
+    // A search that decides — here that the ray misses — ends the run of failures.
+    BernsteinBall positive;
+    positive.degree = 2;
+    for (int k = 0; k <= 2; ++k) {
+        positive.b[k] = 1.0;
+        positive.r[k] = 0.0;
+    }
+    NeighbourHint failing;
+    failing.family_failures = kFamilyFailuresBeforeRest - 1;
+    const RootResult decided = tracer.first_hit_from(positive, 0.0, 1.0, camera.ray(0.5, 0.5),
+                                                     {0.0, 1.0}, kRenderTolerance, &failing);
+    EXPECT_EQ(decided.status, RootStatus::miss);
+    EXPECT_EQ(failing.family_failures, 0);
+    EXPECT_EQ(failing.family_rest, 0);
 }
 
 // De Casteljau may write a piece over the ball it splits (the isolation's stack relies on it).

@@ -166,6 +166,10 @@ class F4Engine {
     // the number of rows of the matrix (see lazy_reduction).
     SparseRow reduce_dense(std::vector<std::uint64_t>& acc, std::size_t from, const Pivots& pivots,
                            std::size_t rows) const;
+    // Loads `row` into the zeroed dense accumulator `acc` and reduces it by the pivots (the
+    // result not made monic; empty when it reduces to 0).
+    SparseRow reduce_loaded_row(PivotRow row, std::vector<std::uint64_t>& acc, const Pivots& pivots,
+                                std::size_t rows) const;
     // Reduces `row` (a view; using the zeroed dense accumulator `acc`) by the pivots; a
     // non-zero result is made monic. Nothing when it reduces to 0.
     std::optional<SparseRow> reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
