@@ -79,13 +79,7 @@ void flint_restriction(fmpq_poly_t out, const Polynomial& f, const std::array<do
     fmpq_clear(value);
 }
 
-struct IntegerPoly {
-    fmpz_poly_t p;
-    IntegerPoly() { fmpz_poly_init(p); }
-    ~IntegerPoly() { fmpz_poly_clear(p); }
-    IntegerPoly(const IntegerPoly&) = delete;
-    IntegerPoly& operator=(const IntegerPoly&) = delete;
-};
+using IntegerPoly = detail::FmpzPoly;
 
 struct RationalPoly {
     fmpq_poly_t p;
