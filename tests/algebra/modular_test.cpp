@@ -295,6 +295,29 @@ TEST(Modular, ReplayOfTheFirstPrimesTraceEqualsF4OnAnotherPrime) {
     }
 }
 
+// The lifting on two threads (the elements merged and reconstructed side by side, handed out
+// in order and none past a failure): the basis of one thread, over several attempts (katsura-7:
+// 41 elements, coefficients that need about nine primes), with and without certification.
+TEST(Modular, LiftingOnTwoThreadsGivesTheBasisOfOne) {
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura7.ideal"));
+    ModularOptions options;
+    options.certify = false;
+    ModularStats one_stats, two_stats;
+    options.threads = 1;
+    const GroebnerResult one = modular_groebner(ideal.generators, options, &one_stats);
+    options.threads = 2;
+    const GroebnerResult two = modular_groebner(ideal.generators, options, &two_stats);
+    ASSERT_EQ(one.basis.size(), 41u);
+    EXPECT_EQ(normalized(two.basis, *ideal.ring), normalized(one.basis, *ideal.ring));
+    EXPECT_GE(two_stats.primes_used.size(), 5u);
+    options.certify = true;
+    ModularStats certified;
+    const GroebnerResult checked = modular_groebner(ideal.generators, options, &certified);
+    EXPECT_TRUE(certified.certified);
+    EXPECT_EQ(normalized(checked.basis, *ideal.ring), normalized(one.basis, *ideal.ring));
+}
+
 // F4's linear algebra on two threads (the S-halves reduced by the reducers side by side, then
 // in order by the new rows) makes the same rows as on one: the same basis, the same trace (a
 // replay of the two-thread trace gives the one-thread basis modulo another prime) and the same
