@@ -621,7 +621,15 @@ double bezout_bound(std::span<const Polynomial> generators) {
 // 512 elements it cost 1.7 s). Neither a budget of steps alone (cyclic-7 spent 1 s in
 // it) nor the size of a basis modulo p separated these cases. Under lex and elimination orders
 // FGLM wins on zero-dimensional ideals (katsura5_lex 1.6 ms against 11 ms), while the small
-// suite cases finish by signatures in 3 to 149 reduction steps: a budget of 300.
+// suite cases finish by signatures in 3 to 149 reduction steps: a budget of 300. A square (or
+// overdetermined) system of shape B·n ≥ 150 under such an order skips the probe: cyclic5_lex
+// (600) spent 2 ms in it before the modular route answered anyway (4.0 ms in all against 2.0
+// directly; Singular 1.9 ms), while the cases the probe answers are smaller (katsura4_lex 32,
+// cyclic4_lex 96) or have fewer generators than variables (the elimination ideals of
+// parametrizations, often positive-dimensional, where the modular route has no FGLM).
+// katsura5_lex (80) still probes and goes modular (4.1 ms; Singular 5.5 ms): shape does not
+// separate it from cyclic4_lex, nor growth from katsura4_lex (64 bits within 256 elements would
+// send katsura4_lex modular, 0.3 → 0.67 ms).
 namespace {
 
 // The modular route run on a thread of its own, cancelled (and waited for) on destruction
@@ -704,11 +712,15 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     const RingPtr& ring = generators.front().ring();
     const bool degree_order = ring->order().is_degree_order();
     constexpr double kModularShape = 4500;  // Bézout's bound times the number of variables
+    constexpr double kOtherOrderModularShape = 150;
     constexpr std::size_t kDegreeOrderBudget = 80000, kOtherOrderBudget = 300;
     // Growth: 64 bits within 256 elements, 128 within 512, … (four elements a bit).
     constexpr std::size_t kGrowthBits = 64, kGrowthBasis = 256, kLargeShapeBudget = 2000000;
     GroebnerResult result;
     const double shape = bezout_bound(generators) * static_cast<double>(ring->num_vars());
+    const bool skip_probe = !degree_order && shape >= kOtherOrderModularShape &&
+                            generators.size() >= ring->num_vars() &&
+                            options.max_reduction_steps == 0;
     GroebnerOptions probing = options;
     if (!degree_order) {
         probing.max_reduction_steps = kOtherOrderBudget;
@@ -752,7 +764,11 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         }
         ahead.emplace(generators, beside);
     }
-    result = signature_groebner_or_buchberger(generators, probing);
+    if (skip_probe) {
+        result.outcome = GroebnerOutcome::stopped_size;  // as if the probe had handed over
+    } else {
+        result = signature_groebner_or_buchberger(generators, probing);
+    }
     probe_running = false;
     // Stopped by the probe's budget or growth rule, not by the caller's own limits.
     const bool callers_limit =
