@@ -2,6 +2,8 @@
 
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
+#include <flint/fmpz_lll.h>
+#include <flint/fmpz_mat.h>
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
@@ -83,19 +85,91 @@ bool value_agrees(LiftedNumber& number, const std::vector<PrimeField>& fields) {
 
 }  // namespace
 
-bool RationalLift::Attempt::reconstruct(LiftedNumber& number) {
+void RationalLift::Attempt::combine(const LiftedNumber& number) {
+    fmpz_multi_CRT_ui(residue_.get(), number.residues.data(), comb_, temp_, 0);  // in [0, M)
+}
+
+bool RationalLift::Attempt::reconstruct(LiftedNumber& number, const Integer* denominator) {
     if (number.value_primes > 0 && value_agrees(number, lift_.fields_)) {
         return true;
     }
-    fmpz_multi_CRT_ui(residue_.get(), number.residues.data(), comb_, temp_, 0);  // in [0, M)
+    combine(number);
+    const fmpz* modulus = lift_.modulus_.get();
+    bool over_denominator = false;
     if (fmpz_is_zero(residue_.get())) {
         fmpq_zero(number.value.get());
-    } else if (fmpq_reconstruct_fmpz(number.value.get(), residue_.get(), lift_.modulus_.get()) ==
-               0) {
+    } else if (denominator != nullptr) {
+        // D·r as a rational a/b with |a| < M/2^(margin + extra + 1) and b < 2^extra: an integer
+        // over D, or one over D times a small factor D lacks.
+        fmpz_mul(scaled_.get(), residue_.get(), denominator->get());
+        fmpz_mod(scaled_.get(), scaled_.get(), modulus);
+        const flint_bitcnt_t bits = fmpz_bits(modulus);
+        if (bits > kMarginBits + kExtraDenominatorBits + 2) {
+            fmpz_fdiv_q_2exp(numerator_bound_.get(), modulus,
+                             kMarginBits + kExtraDenominatorBits + 1);
+            fmpz_one(denominator_bound_.get());
+            fmpz_mul_2exp(denominator_bound_.get(), denominator_bound_.get(),
+                          kExtraDenominatorBits);
+            over_denominator =
+                fmpq_reconstruct_fmpz_2(number.value.get(), scaled_.get(), modulus,
+                                        numerator_bound_.get(), denominator_bound_.get()) != 0;
+            if (over_denominator) {
+                fmpq_div_fmpz(number.value.get(), number.value.get(), denominator->get());
+            }
+        }
+    }
+    if (!fmpz_is_zero(residue_.get()) && !over_denominator &&
+        fmpq_reconstruct_fmpz(number.value.get(), residue_.get(), modulus) == 0) {
         return false;
     }
     number.value_primes = number.found_with = lift_.primes_.size();
     return true;
+}
+
+std::optional<Integer> RationalLift::Attempt::common_denominator(
+    std::span<LiftedNumber* const> numbers) {
+    const auto k = static_cast<slong>(numbers.size());
+    if (k < 2) {
+        return std::nullopt;
+    }
+    const fmpz* modulus = lift_.modulus_.get();
+    // Rows: (1, r₁, …, r_k) and M·e_i; every lattice vector is (D, D·r_i − a_i·M).
+    fmpz_mat_t lattice;
+    fmpz_mat_init(lattice, k + 1, k + 1);
+    fmpz_one(fmpz_mat_entry(lattice, 0, 0));
+    for (slong i = 0; i < k; ++i) {
+        combine(*numbers[static_cast<std::size_t>(i)]);
+        fmpz_set(fmpz_mat_entry(lattice, 0, i + 1), residue_.get());
+        fmpz_set(fmpz_mat_entry(lattice, i + 1, i + 1), modulus);
+    }
+    fmpz_lll_t context;
+    fmpz_lll_context_init_default(context);
+    fmpz_lll(lattice, nullptr, context);
+    // No accident: the first vector short against the lattice's ordinary shortest vector
+    // (about M^(k/(k+1))) and against the second reduced vector (a planted short vector leaves
+    // the others about (M^k/|v|)^(1/k); a random lattice's are all alike).
+    const auto longest_entry = [&](slong row) {
+        flint_bitcnt_t bits = 0;
+        for (slong j = 0; j <= k; ++j) {
+            bits = std::max(bits, fmpz_bits(fmpz_mat_entry(lattice, row, j)));
+        }
+        return static_cast<slong>(bits);
+    };
+    const auto margin = static_cast<slong>(kMarginBits);
+    const slong first = longest_entry(0);
+    std::optional<Integer> found;
+    const fmpz* d = fmpz_mat_entry(lattice, 0, 0);
+    if (!fmpz_is_zero(d)) {
+        const bool short_enough =
+            first <= static_cast<slong>(fmpz_bits(modulus)) * k / (k + 1) - margin &&
+            first + margin <= longest_entry(1);
+        if (short_enough) {
+            found.emplace();
+            fmpz_abs(found->get(), d);
+        }
+    }
+    fmpz_mat_clear(lattice);
+    return found;
 }
 
 }  // namespace locus::algebra::modular

@@ -13,6 +13,12 @@
 // made lifting quadratic in the primes (1813 primes for the atlas' explode_rational_lex took
 // 33 s of lifting); the spacing costs at most 3 % more primes than needed.
 //
+// The coefficients of one polynomial usually share most of their denominator: given it, each
+// is an integer over it (or over it times a small factor), which needs about half the primes of
+// the rational; simultaneous reconstruction of a few numbers finds it (Attempt's
+// common_denominator and reconstruct with a denominator; the Gröbner route uses them per
+// element: cyclic-8 44 → 30 primes).
+//
 // A lift is a candidate, not a result: a value reconstructed from k primes and agreeing with a
 // prime it was not made from is `confirmed` (the interpolation's stopping rule), and callers
 // prove what they accept (substitution, or the Gröbner route's certification).
@@ -22,6 +28,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "algebra/modular/modular_polynomial.h"
@@ -83,14 +91,39 @@ class RationalLift {
         // The number's value from all the lift's primes: kept when it agrees with the residues
         // it has not been checked against, else reconstructed (0 when every residue is 0).
         // False when no rational within the modulus' bounds has these residues.
-        bool reconstruct(LiftedNumber& number);
+        // With a `denominator` D that goes with the number (one its element's coefficients
+        // share), D·r (mod M) is first taken as a/b with |a| < M/2^(kMarginBits +
+        // kExtraDenominatorBits + 1) and b < 2^kExtraDenominatorBits, the value being a/(b·D):
+        // an integer over D, or over D times a small factor that D lacks, needs about half the
+        // primes of a rational with D's digits in it. The bounds leave a margin, so that a
+        // residue its primes do not determine yet passes with probability about
+        // 2^−kMarginBits.
+        bool reconstruct(LiftedNumber& number, const Integer* denominator = nullptr);
+        // A denominator shared by these numbers (at least two; their values are not looked
+        // at), by simultaneous rational reconstruction: the first vector of the LLL-reduced
+        // lattice of (D, D·r₁ mod M, …, D·r_k mod M), when it is too short to be an accident
+        // (every entry 2^kMarginBits below M^(k/(k+1)), the size of a random lattice's
+        // shortest vector, and below the second reduced vector's by as much). With k numbers of
+        // numerators below N and a common denominator D this needs about
+        // log N + log max(N, D)/k bits where rational reconstruction of any one of them needs
+        // log N + log D (cyclic-8: 1 334 bits for the latter, about 840 for k = 4).
+        // Nothing when there is no such vector.
+        std::optional<Integer> common_denominator(std::span<LiftedNumber* const> numbers);
 
       private:
+        // residue_ ← the number's residues combined, in [0, M).
+        void combine(const LiftedNumber& number);
+
         const RationalLift& lift_;
         fmpz_comb_t comb_;
         fmpz_comb_temp_t temp_;
-        Integer residue_;
+        Integer residue_, scaled_, numerator_bound_, denominator_bound_;
     };
+
+    // The safety margin, in bits, of reconstructions whose acceptance is a size test.
+    static constexpr flint_bitcnt_t kMarginBits = 32;
+    // The largest factor, in bits, that a number's denominator may have beyond the one given.
+    static constexpr flint_bitcnt_t kExtraDenominatorBits = 64;
 
   private:
     std::vector<mp_limb_t> primes_;

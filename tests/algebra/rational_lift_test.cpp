@@ -10,6 +10,7 @@
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -114,6 +115,87 @@ TEST(RationalLift, AValueStopsBeingConfirmedWhenAPrimeDisagrees) {
         if (k >= 2) {
             EXPECT_FALSE(confirmed) << "after " << k + 1 << " primes";
         }
+    }
+}
+
+// Numbers sharing a large denominator (as the coefficients of one element of a reduced basis
+// over Q do): four of them give it back by simultaneous reconstruction with about
+// log N + log max(N, D)/4 bits, where rational reconstruction of any one needs log N + log D;
+// then every number of the group comes back as an integer over it, including one whose
+// denominator has a small factor more. Random residues give no denominator (no accident).
+TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
+    std::mt19937_64 random(11);
+    const auto big = [&](int digits) {
+        std::string text = std::to_string(1 + random() % 9);
+        for (int i = 1; i < digits; ++i) {
+            text += std::to_string(random() % 10);
+        }
+        Integer value;
+        fmpz_set_str(value.get(), text.c_str(), 10);
+        return value;
+    };
+    const Integer denominator = big(150);  // about 500 bits; numerators too
+    std::vector<Rational> truth;
+    for (int i = 0; i < 12; ++i) {
+        Rational q;
+        fmpz_set(fmpq_numref(q.get()), big(150).get());
+        if (i % 2 == 1) {
+            fmpz_neg(fmpq_numref(q.get()), fmpq_numref(q.get()));
+        }
+        fmpz_set(fmpq_denref(q.get()), denominator.get());
+        if (i == 5) {  // a small factor more than the others
+            fmpz_mul_ui(fmpq_denref(q.get()), fmpq_denref(q.get()), 1000003);
+        }
+        fmpq_canonicalise(q.get());
+        truth.push_back(q);
+    }
+    std::vector<LiftedNumber> numbers(truth.size());
+    RationalLift lift;
+    mp_limb_t p = (1u << 31) + 1;
+    std::optional<Integer> found;
+    std::size_t primes_at_found = 0;
+    for (int k = 0; k < 60 && !found; ++k) {
+        p = prime_below(p);
+        for (std::size_t i = 0; i < truth.size(); ++i) {
+            numbers[i].residues.push_back(residue_of(truth[i], p));
+        }
+        lift.add_prime(p);
+        RationalLift::Attempt attempt(lift);
+        std::vector<LiftedNumber*> four{&numbers[0], &numbers[1], &numbers[2], &numbers[3]};
+        found = attempt.common_denominator(four);
+        primes_at_found = lift.primes();
+    }
+    ASSERT_TRUE(found.has_value());
+    EXPECT_TRUE(fmpz_divisible(found->get(), denominator.get()) &&
+                fmpz_divisible(denominator.get(), found->get()));
+    // Rational reconstruction of one number needs about 1000 bits (33 primes); four together
+    // about 500 · 5/4 + 32 bits.
+    EXPECT_LE(primes_at_found, 24u);
+    EXPECT_GE(primes_at_found, 20u);
+    RationalLift::Attempt attempt(lift);
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        ASSERT_TRUE(attempt.reconstruct(numbers[i], &*found)) << i;
+        EXPECT_TRUE(fmpq_equal(numbers[i].value.get(), truth[i].get())) << i;
+        LiftedNumber alone;
+        alone.residues = numbers[i].residues;
+        // Too few primes for the number alone: rational reconstruction cannot give it back
+        // (it may give another rational, as it does for most residues).
+        EXPECT_FALSE(attempt.reconstruct(alone) && fmpq_equal(alone.value.get(), truth[i].get()))
+            << i;
+    }
+    // Residues of nothing in particular: no common denominator at any number of primes.
+    std::vector<LiftedNumber> noise(4);
+    RationalLift noise_lift;
+    p = (1u << 31) + 1;
+    for (int k = 0; k < 40; ++k) {
+        p = prime_below(p);
+        for (LiftedNumber& n : noise) {
+            n.residues.push_back(random() % p);
+        }
+        noise_lift.add_prime(p);
+        RationalLift::Attempt noise_attempt(noise_lift);
+        std::vector<LiftedNumber*> all{&noise[0], &noise[1], &noise[2], &noise[3]};
+        EXPECT_FALSE(noise_attempt.common_denominator(all).has_value()) << k + 1 << " primes";
     }
 }
 
