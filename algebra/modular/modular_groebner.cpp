@@ -159,55 +159,31 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
     group.lift.add_prime(p);
 }
 
-// One coefficient of element e: as an integer over the element's denominator first, then as a
-// rational, and when both fail, with a denominator found by simultaneous reconstruction of it
-// and three more coefficients of the element (the next ones, or the last ones). Why: the
-// coefficients of an element of a reduced basis over Q share most of their denominator, and
-// the numerators over it need about half the bits of the rationals (cyclic-8: 672 of 1 334
-// bits, katsura-10: 407 of 800), but a denominator found from one coefficient costs the full
-// bits again (1 309 for cyclic-8 even taking the cheapest coefficients first); four together
-// find it at about 840 (rational_lift.h). The element's denominator takes in only what is
-// reliable: denominators found that way, and those of values a later prime confirmed (a
-// rational reconstruction with too few primes can succeed by accident, and its denominator
-// would then make every integer of the element too large). Before a lattice, `hint`, the last
-// denominator this thread found, is tried: elements share denominators, or most of them
-// (cyclic-8: 128 distinct among 372 elements), and on katsura-10 the hint took the lattice
-// reductions from 296 (0.24 s) to 31. Each element is reconstructed by one thread at a time.
+// One coefficient of element e, sharing the element's denominator (rational_lift.h's
+// reconstruct_sharing), with three more coefficients of the element (the next ones, or the last
+// ones) as companions for a lattice. Why: the coefficients of an element of a reduced basis
+// over Q share most of their denominator, and the numerators over it need about half the bits
+// of the rationals (cyclic-8: 672 of 1 334 bits, katsura-10: 407 of 800), but a denominator
+// found from one coefficient costs the full bits again (1 309 for cyclic-8 even taking the
+// cheapest coefficients first); four together find it at about 840. `hint` is the last
+// denominator this thread found: elements share denominators, or most of them (cyclic-8: 128
+// distinct among 372 elements), and on katsura-10 the hint took the lattice reductions from
+// 296 (0.24 s) to 31. Each element is reconstructed by one thread at a time.
 bool reconstruct_term(modular::RationalLift::Attempt& attempt, Group& group, std::size_t e,
                       std::size_t t, Integer& hint) {
-    constexpr std::size_t kSimultaneous = 4;
+    constexpr std::size_t kTogether = 4;
     LiftedElement& element = group.elements[e];
-    Integer& denominator = group.denominators[e];
-    modular::LiftedNumber& number = element[t].coefficient;
-    if (attempt.reconstruct(number, &denominator)) {
-        const fmpz* d = fmpq_denref(number.value.get());
-        if (number.confirmed() && !fmpz_is_one(d)) {
-            fmpz_lcm(denominator.get(), denominator.get(), d);
+    return attempt.reconstruct_sharing(element[t].coefficient, group.denominators[e], hint, [&] {
+        std::vector<modular::LiftedNumber*> companions;
+        const std::size_t count = std::min(kTogether, element.size());
+        for (std::size_t u = std::min(t, element.size() - count); companions.size() + 1 < count;
+             ++u) {
+            if (u != t) {
+                companions.push_back(&element[u].coefficient);
+            }
         }
-        return true;
-    }
-    if (!(hint == denominator) && attempt.reconstruct(number, &hint)) {
-        denominator = hint;
-        return true;
-    }
-    if (element.size() < 2) {
-        return false;
-    }
-    const std::size_t together_count = std::min(kSimultaneous, element.size());
-    const std::size_t from = std::min(t, element.size() - together_count);
-    std::vector<modular::LiftedNumber*> together{&number};
-    for (std::size_t u = from; together.size() < together_count; ++u) {
-        if (u != t) {
-            together.push_back(&element[u].coefficient);
-        }
-    }
-    const std::optional<Integer> common = attempt.common_denominator(together);
-    if (!common) {
-        return false;
-    }
-    fmpz_lcm(denominator.get(), denominator.get(), common->get());
-    hint = denominator;
-    return attempt.reconstruct(number, &denominator);
+        return companions;
+    });
 }
 
 // Rational reconstruction of every coefficient; nothing when one fails. The coefficient that

@@ -172,4 +172,31 @@ std::optional<Integer> RationalLift::Attempt::common_denominator(
     return found;
 }
 
+bool RationalLift::Attempt::reconstruct_sharing(
+    LiftedNumber& number, Integer& denominator, Integer& hint,
+    const std::function<std::vector<LiftedNumber*>()>& companions) {
+    if (reconstruct(number, &denominator)) {
+        const fmpz* d = fmpq_denref(number.value.get());
+        if (number.confirmed() && !fmpz_is_one(d)) {
+            fmpz_lcm(denominator.get(), denominator.get(), d);
+        }
+        return true;
+    }
+    if (!(hint == denominator) && reconstruct(number, &hint)) {
+        denominator = hint;
+        return true;
+    }
+    std::vector<LiftedNumber*> together{&number};
+    for (LiftedNumber* other : companions()) {
+        together.push_back(other);
+    }
+    const std::optional<Integer> common = common_denominator(together);
+    if (!common) {
+        return false;
+    }
+    fmpz_lcm(denominator.get(), denominator.get(), common->get());
+    hint = denominator;
+    return reconstruct(number, &denominator);
+}
+
 }  // namespace locus::algebra::modular

@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -109,6 +110,17 @@ class RationalLift {
         // log N + log D (cyclic-8: 1 334 bits for the latter, about 840 for k = 4).
         // Nothing when there is no such vector.
         std::optional<Integer> common_denominator(std::span<LiftedNumber* const> numbers);
+        // One of a group of numbers that share most of a denominator (the coefficients of one
+        // polynomial): first over `denominator` (the group's, as far as known), then as a
+        // plain rational, then over `hint` (the last denominator the caller found, often
+        // shared between groups), and last over a denominator found by common_denominator()
+        // of the number with `companions()` (a few more of its group; asked only then). The
+        // group's denominator takes in only what is reliable: those found by the lattice or
+        // taken from the hint, and the denominators of values a later prime confirmed (a
+        // rational reconstruction from too few primes can succeed by accident, and its
+        // denominator would make every integer of the group too large).
+        bool reconstruct_sharing(LiftedNumber& number, Integer& denominator, Integer& hint,
+                                 const std::function<std::vector<LiftedNumber*>()>& companions);
 
       private:
         // residue_ ← the number's residues combined, in [0, M).

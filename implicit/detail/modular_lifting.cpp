@@ -19,11 +19,22 @@ bool NormalizedLifting::add(const std::vector<ulong>& image, ulong p) {
     }
     algebra::modular::RationalLift::Attempt attempt(lift_);
     bool confirmed = true;
-    for (algebra::modular::LiftedNumber& number : numbers_) {
-        if (!attempt.reconstruct(number)) {
+    for (std::size_t j = 0; j < numbers_.size(); ++j) {
+        // The entries share the pivot's denominator (they are a primitive integer vector
+        // divided by its pivot entry): as integers over it they need about half the primes.
+        const bool found = attempt.reconstruct_sharing(numbers_[j], denominator_, hint_, [&] {
+            std::vector<algebra::modular::LiftedNumber*> companions;
+            for (std::size_t u = 0; u < numbers_.size() && companions.size() < 3; ++u) {
+                if (u != j && u != pivot_) {
+                    companions.push_back(&numbers_[u]);
+                }
+            }
+            return companions;
+        });
+        if (!found) {
             return false;
         }
-        confirmed = confirmed && number.confirmed();
+        confirmed = confirmed && numbers_[j].confirmed();
     }
     if (!confirmed) {
         return false;

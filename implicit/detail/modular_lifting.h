@@ -34,6 +34,7 @@ class NormalizedLifting {
     algebra::modular::RationalLift lift_;
     std::vector<algebra::modular::LiftedNumber> numbers_;
     std::vector<algebra::Rational> current_;
+    algebra::Integer denominator_{1}, hint_{1};  // rational_lift.h's reconstruct_sharing
 };
 
 }  // namespace locus::implicit::detail
