@@ -160,18 +160,19 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
 }
 
 // One coefficient of element e, sharing the element's denominator (rational_lift.h's
-// reconstruct_sharing), with three more coefficients of the element (the next ones, or the last
+// reconstruct_sharing), with seven more coefficients of the element (the next ones, or the last
 // ones) as companions for a lattice. Why: the coefficients of an element of a reduced basis
 // over Q share most of their denominator, and the numerators over it need about half the bits
 // of the rationals (cyclic-8: 672 of 1 334 bits, katsura-10: 407 of 800), but a denominator
 // found from one coefficient costs the full bits again (1 309 for cyclic-8 even taking the
-// cheapest coefficients first); four together find it at about 840. `hint` is the last
-// denominator this thread found: elements share denominators, or most of them (cyclic-8: 128
-// distinct among 372 elements), and on katsura-10 the hint took the lattice reductions from
-// 296 (0.24 s) to 31. Each element is reconstructed by one thread at a time.
+// cheapest coefficients first); eight together find it at about 760 (four: 840; cyclic-8 needs
+// 27 primes with eight, 30 with four, katsura-11 25 and 29, for 0.1–0.2 s more of lattices). `hint`
+// is the last denominator this thread found: elements share denominators, or most of them
+// (cyclic-8: 128 distinct among 372 elements), and on katsura-10 the hint took the lattice
+// reductions from 296 (0.24 s) to 31. Each element is reconstructed by one thread at a time.
 bool reconstruct_term(modular::RationalLift::Attempt& attempt, Group& group, std::size_t e,
                       std::size_t t, Integer& hint) {
-    constexpr std::size_t kTogether = 4;
+    constexpr std::size_t kTogether = 8;
     LiftedElement& element = group.elements[e];
     return attempt.reconstruct_sharing(element[t].coefficient, group.denominators[e], hint, [&] {
         std::vector<modular::LiftedNumber*> companions;

@@ -17,7 +17,7 @@
 // is an integer over it (or over it times a small factor), which needs about half the primes of
 // the rational; simultaneous reconstruction of a few numbers finds it (Attempt's
 // common_denominator and reconstruct with a denominator; the Gröbner route uses them per
-// element: cyclic-8 44 → 30 primes).
+// element: cyclic-8 44 → 27 primes).
 //
 // A lift is a candidate, not a result: a value reconstructed from k primes and agreeing with a
 // prime it was not made from is `confirmed` (the interpolation's stopping rule), and callers
@@ -107,7 +107,7 @@ class RationalLift {
         // shortest vector, and below the second reduced vector's by as much). With k numbers of
         // numerators below N and a common denominator D this needs about
         // log N + log max(N, D)/k bits where rational reconstruction of any one of them needs
-        // log N + log D (cyclic-8: 1 334 bits for the latter, about 840 for k = 4).
+        // log N + log D (cyclic-8: 1 334 bits for the latter, about 840 for k = 4, 760 for k = 8).
         // Nothing when there is no such vector.
         std::optional<Integer> common_denominator(std::span<LiftedNumber* const> numbers);
         // One of a group of numbers that share most of a denominator (the coefficients of one
