@@ -129,10 +129,10 @@ bool RationalLift::Attempt::reconstruct(LiftedNumber& number, const Integer* den
 std::optional<Integer> RationalLift::Attempt::common_denominator(
     std::span<LiftedNumber* const> numbers) {
     const auto k = static_cast<slong>(numbers.size());
-    if (k < 2) {
+    const fmpz* modulus = lift_.modulus_.get();
+    if (k < 2 || fmpz_bits(modulus) > kLatticeBits) {
         return std::nullopt;
     }
-    const fmpz* modulus = lift_.modulus_.get();
     // Rows: (1, r₁, …, r_k) and M·e_i; every lattice vector is (D, D·r_i − a_i·M).
     fmpz_mat_t lattice;
     fmpz_mat_init(lattice, k + 1, k + 1);

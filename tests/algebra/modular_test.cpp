@@ -378,6 +378,34 @@ TEST(Modular, LiftingNeedsFewerPrimesThanTheLargestRational) {
     }
 }
 
+// A coefficient with a small denominator is lifted as an integer over it (D·r = a/b with b
+// below 2^64, D = 1 here), which needs about half the primes of a rational reconstruction
+// (|n| and d both below √(M/2)): this basis has a³ − (N/3)·b with a 5 090-bit N, which took
+// 331 primes and now 172. (Hostile sizes: lattices stop past 16 384 bits of modulus, so a
+// 36 000-digit constant costs no lattice reductions: 12.4 → 1.0 s.)
+TEST(Modular, ASmallDenominatorNeedsHalfThePrimesOfARational) {
+    const IdealFile file = parse_ideal_file("vars: a,b\na^2*b-(2*10^38)^20\na*b^3-3\n");
+    ModularOptions options;
+    options.threads = 1;
+    ModularStats stats;
+    const GroebnerResult r = modular_groebner(file.generators, options, &stats);
+    ASSERT_TRUE(stats.certified);
+    EXPECT_EQ(normalized(r.basis, *file.ring),
+              normalized(buchberger(file.generators).basis, *file.ring));
+    std::size_t largest = 0;  // numerator bits, over denominators of at most 64 bits
+    for (const Polynomial& g : r.basis) {
+        for (std::size_t i = 0; i < g.num_terms(); ++i) {
+            const Rational& c = g.coefficient(i);
+            if (fmpz_bits(fmpq_denref(c.get())) <= 64) {
+                largest = std::max<std::size_t>(largest, fmpz_bits(fmpq_numref(c.get())));
+            }
+        }
+    }
+    ASSERT_GT(largest, 5000u);
+    // About B + 97 bits of primes for a B-bit numerator, where rational reconstruction needs 2B.
+    EXPECT_LT(stats.primes_used.size() * 31, largest * 6 / 5);
+}
+
 // F4's linear algebra on two threads (the S-halves reduced by the reducers side by side, then
 // in order by the new rows) makes the same rows as on one: the same basis, the same trace (a
 // replay of the two-thread trace gives the one-thread basis modulo another prime) and the same
