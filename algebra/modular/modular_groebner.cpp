@@ -360,7 +360,9 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     // Primes whose inputs are reduced and, once a trace exists, whose replays are done: the
     // replays run in batches on lanes, one residue a prime (f4_replay_lanes), 3.5–4.5 times
     // faster than one prime at a time (cyclic-7: 16 replays 0.30 → 0.07 s). A batch may hold
-    // primes the lift turns out not to need; a first batch of 8 keeps that small.
+    // primes the lift turns out not to need: batches of 8 keep that small (with 16 after the
+    // first, cyclic-8's 26 replays took 40, since its lift needs half the primes it did: 10.9
+    // against 9.7 s; katsura-11's cost per replay is the same either way).
     struct Prepared {
         std::uint32_t p;
         std::vector<ModularPolynomial> reduced, reduced_grevlex;
@@ -368,7 +370,6 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         std::optional<std::vector<ModularPolynomial>> replayed;
     };
     std::deque<Prepared> ready;
-    std::size_t batches = 0;
     // The next prime that divides no leading coefficient or denominator of the inputs, with
     // the inputs modulo it; the others are counted as unlucky.
     auto next_usable = [&]() -> std::optional<Prepared> {
@@ -409,7 +410,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             !options.certify && std::any_of(groups.begin(), groups.end(),
                                             [](const Group& g) { return g.candidate.has_value(); });
         if (ready.empty()) {
-            const std::size_t batch = tracing && trace && !confirming ? (batches == 0 ? 8 : 16) : 1;
+            const std::size_t batch = tracing && trace && !confirming ? 8 : 1;
             // With several threads, that many batches at once, each on its own thread: the
             // replays of different primes share nothing but the (read-only) trace.
             // At most four batches at once: each holds a basis a prime until the lift has
@@ -429,7 +430,6 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 break;
             }
             if (batch > 1) {
-                ++batches;
                 const auto replay_start = Clock::now();
                 const std::size_t group_count = (ready.size() + batch - 1) / batch;
                 auto replay_group = [&](std::size_t g) {
