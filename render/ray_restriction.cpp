@@ -10,13 +10,56 @@ namespace locus::render {
 
 LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
                                std::span<const double> low_words) {
+    // The axis a term is a pure power of (−1: none, or the constant).
+    const auto pure_axis = [](const algebra::CompiledTerm& term) {
+        const int exponents[3] = {term.ex, term.ey, term.ez};
+        int axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            if (exponents[a] > 0) {
+                if (axis >= 0) {
+                    return -1;
+                }
+                axis = a;
+            }
+        }
+        return axis;
+    };
+    std::array<int, 3> pure_degree{}, other_exponent{};
+    for (const algebra::CompiledTerm& term : terms) {
+        const int exponents[3] = {term.ex, term.ey, term.ez};
+        const int axis = pure_axis(term);
+        for (int a = 0; a < 3; ++a) {
+            if (a == axis) {
+                pure_degree[a] = std::max(pure_degree[a], exponents[a]);
+            } else {
+                other_exponent[a] = std::max(other_exponent[a], exponents[a]);
+            }
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (pure_degree[a] > other_exponent[a]) {
+            univariate_[a].degree = pure_degree[a];
+            univariate_[a].by_exponent.assign(pure_degree[a] + 1, ZTerm{-1, 0.0, 0.0, 0.0});
+            table_exponent_[a] = other_exponent[a];
+        } else {
+            table_exponent_[a] = std::max(pure_degree[a], other_exponent[a]);
+        }
+    }
     std::map<int, std::map<int, std::vector<ZTerm>>> grouped;
     for (std::size_t i = 0; i < terms.size(); ++i) {
         const algebra::CompiledTerm& term = terms[i];
-        grouped[term.ex][term.ey].push_back({term.ez, term.coefficient, std::abs(term.coefficient),
-                                             i < low_words.size() ? low_words[i] : 0.0});
+        const double low_word = i < low_words.size() ? low_words[i] : 0.0;
         degree_ = std::max(degree_, term.ex + term.ey + term.ez);
-        max_exponent_ = std::max({max_exponent_, term.ex, term.ey, term.ez});
+        const int axis = pure_axis(term);
+        if (axis >= 0 && univariate_[axis].degree > 0) {
+            const int k = term.ex + term.ey + term.ez;
+            ZTerm& slot = univariate_[axis].by_exponent[k];
+            // Compiled terms are distinct monomials: one coefficient per exponent.
+            slot = {k, term.coefficient, std::abs(term.coefficient), low_word};
+            continue;
+        }
+        grouped[term.ex][term.ey].push_back(
+            {term.ez, term.coefficient, std::abs(term.coefficient), low_word});
     }
     for (auto& [ex, by_y] : grouped) {
         XGroup x_group{ex, 0, {}};
@@ -45,7 +88,15 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
         longest_yz = std::max(longest_yz, yz_sum);
         x_sum += x_group.ex + 1;
     }
-    rounding_depth_ = 2 * std::max(degree_, 0) + 3 + longest_z + longest_yz + x_sum;
+    // Horner's rule: per step a sum of products (two roundings on a path) and the step's
+    // coefficient added (one more); then the sum into the result, whose chains gain an
+    // addend per such axis.
+    int longest_horner = 0;
+    for (const Univariate& u : univariate_) {
+        longest_horner = std::max(longest_horner, 3 * u.degree + 1);
+    }
+    rounding_depth_ =
+        2 * std::max(degree_, 0) + 3 + longest_z + longest_yz + x_sum + 3 + longest_horner;
 }
 
 namespace {
@@ -262,7 +313,7 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
         const Scalar& d = direction[static_cast<std::size_t>(axis)];
         PowerTable& table = powers[axis];
         table[0][0] = Scalar::one();
-        for (int k = 1; k <= max_exponent_; ++k) {
+        for (int k = 1; k <= table_exponent_[static_cast<std::size_t>(axis)]; ++k) {
             const auto& previous = table[k - 1];
             auto& row = table[k];
             row[0] = previous[0] * o;
@@ -297,6 +348,32 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
             for (int j = 0; j <= x_group.max_yz; ++j) {
                 Scalar::multiply_add(result[i + j], x_power[i], in_yz[j]);
             }
+        }
+    }
+    // Pure powers by Horner: h ← h·(o + t·d) + c_k from the top, the constant left to the
+    // groups (c_0 = 0 here).
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        const Univariate& u = univariate_[axis];
+        if (u.degree == 0) {
+            continue;
+        }
+        const Scalar& o = origin[axis];
+        const Scalar& d = direction[axis];
+        std::array<Scalar, kMaxDegree + 1> h;
+        h[0] = coefficient(u.by_exponent[static_cast<std::size_t>(u.degree)]);
+        for (int k = u.degree - 1, top = 0; k >= 0; --k, ++top) {
+            h[top + 1] = h[top] * d;
+            for (int j = top; j >= 1; --j) {
+                h[j] = Scalar::sum_of_products(h[j], o, h[j - 1], d);
+            }
+            h[0] = h[0] * o;
+            const ZTerm& term = u.by_exponent[static_cast<std::size_t>(k)];
+            if (k > 0 && term.ez >= 0) {
+                Scalar::multiply_add(h[0], coefficient(term), Scalar::one());
+            }
+        }
+        for (int j = 0; j <= u.degree; ++j) {
+            Scalar::multiply_add(result[j], h[j], Scalar::one());
         }
     }
 }
