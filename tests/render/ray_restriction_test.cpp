@@ -201,6 +201,64 @@ TEST(LineRestrictor, DoubleDoubleBallsHoldTheExactRestriction) {
     EXPECT_GT(checked, 300);
 }
 
+// The restriction's balls in doubles against the exact restriction over Q, on the surfaces
+// whose pure powers go through Horner's rule (an axis' pure powers above its other exponents:
+// Chmutov's T_n, and random surfaces with their top pure powers) and on ones that keep the power
+// tables (every pure power matched by a mixed term as high): every exact coefficient lies within
+// its radius, and the radius stays near u of the terms' magnitudes.
+TEST(LineRestrictor, BallsHoldTheExactRestrictionWithAndWithoutHorner) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+    int checked = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        std::string equation;
+        switch (trial % 4) {
+        case 0:
+            equation = test::chmutov_equation(4 + 2 * (trial % 13));
+            break;
+        case 1:
+            equation = random_equation(rng, 2 + trial % 9) + "-1/3*x^12+7*z^11";
+            break;
+        case 2:  // pure powers no higher than the mixed terms: power tables only
+            equation = random_equation(rng, 2 + trial % 7) + "+x^9*y+y^9*z+z^9*x-2*x^9+y^9/5";
+            break;
+        default:
+            equation = random_equation(rng, 2 + trial % 9);
+            break;
+        }
+        const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+        const LineRestrictor restrictor(f.terms());
+        DoubleDoubleLine line;
+        for (int i = 0; i < 3; ++i) {
+            line.origin_hi[i] = coordinate(rng);
+            line.direction_hi[i] = 0.5 * coordinate(rng);
+        }
+        const RestrictionBall ball = restrictor.restrict_with_bounds(
+            line.origin_hi, line.direction_hi, LineError{}, f.coefficient_error());
+        ASSERT_TRUE(ball.certified) << equation;
+        const std::vector<ExactCoefficient> exact = exact_restriction(f.equation(), line);
+        double magnitude = 0.0;
+        for (const algebra::CompiledTerm& term : f.terms()) {
+            magnitude +=
+                std::abs(term.coefficient) *
+                std::pow(std::abs(line.origin_hi.x) + std::abs(line.direction_hi.x), term.ex) *
+                std::pow(std::abs(line.origin_hi.y) + std::abs(line.direction_hi.y), term.ey) *
+                std::pow(std::abs(line.origin_hi.z) + std::abs(line.direction_hi.z), term.ez);
+        }
+        for (int k = 0; k <= ball.polynomial.degree; ++k) {
+            const auto at = static_cast<std::size_t>(k);
+            const bool within = at < exact.size()
+                                    ? exact[at].within(ball.polynomial.c[k], ball.radius[k])
+                                    : std::abs(ball.polynomial.c[k]) <= ball.radius[k];
+            EXPECT_TRUE(within) << equation << ": coefficient " << k << " " << ball.polynomial.c[k]
+                                << " ± " << ball.radius[k];
+            EXPECT_LT(ball.radius[k], 1e-12 * magnitude) << equation << ": coefficient " << k;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 300);
+}
+
 TEST(RayFamily, MatchesTheGeneralRestrictionOfEachPrimaryRay) {
     for (int seed = 0; seed < test::seed_count(12); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
