@@ -172,18 +172,13 @@ void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std
 // reductions from 296 (0.24 s) to 31. Each element is reconstructed by one thread at a time.
 bool reconstruct_term(modular::RationalLift::Attempt& attempt, Group& group, std::size_t e,
                       std::size_t t, Integer& hint) {
-    constexpr std::size_t kTogether = 8;
+    constexpr std::size_t kCompanions = 7;
     LiftedElement& element = group.elements[e];
     return attempt.reconstruct_sharing(element[t].coefficient, group.denominators[e], hint, [&] {
-        std::vector<modular::LiftedNumber*> companions;
-        const std::size_t count = std::min(kTogether, element.size());
-        for (std::size_t u = std::min(t, element.size() - count); companions.size() + 1 < count;
-             ++u) {
-            if (u != t) {
-                companions.push_back(&element[u].coefficient);
-            }
-        }
-        return companions;
+        // Term 0 is the monic leading coefficient.
+        return modular::companions_near(
+            t, element.size(), kCompanions, 0,
+            [&](std::size_t u) -> modular::LiftedNumber& { return element[u].coefficient; });
     });
 }
 
@@ -198,9 +193,9 @@ bool reconstruct_term(modular::RationalLift::Attempt& attempt, Group& group, std
 // 383 000 coefficients, each reconstructed once; taking every value as soon as its primes
 // allowed made the lifting 2.2 → 2.7 s).
 // On `threads` threads, each with its own attempt, the elements are handed out in the same
-// order, one at a time, and none past a known failure: the coefficients are independent, and
-// the result does not depend on the threads (only which failing coefficient is remembered as
-// the hard one may).
+// order, one at a time, and none past a known failure: the coefficients are independent. Which
+// coefficient fails first, and so the basis, do not depend on the threads; the denominators
+// tried (each thread's hint, reconstruct_term) may, and with them the number of primes.
 // Polls `deadline` per element (the last reconstruction of a large basis takes a quarter of a
 // second: katsura-10).
 std::optional<std::vector<Polynomial>> reconstruct(
@@ -754,7 +749,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     const double shape = bezout_bound(generators) * static_cast<double>(ring->num_vars());
     const bool skip_probe = !degree_order && shape >= kOtherOrderModularShape &&
                             generators.size() >= ring->num_vars() &&
-                            options.max_reduction_steps == 0;
+                            options.max_reduction_steps == 0 && options.max_basis_size == 0;
     GroebnerOptions probing = options;
     if (!degree_order) {
         probing.max_reduction_steps = kOtherOrderBudget;

@@ -94,35 +94,35 @@ bool RationalLift::Attempt::reconstruct(LiftedNumber& number, const Integer* den
         return true;
     }
     combine(number);
-    const fmpz* modulus = lift_.modulus_.get();
-    bool over_denominator = false;
     if (fmpz_is_zero(residue_.get())) {
         fmpq_zero(number.value.get());
-    } else if (denominator != nullptr) {
-        // D·r as a rational a/b with |a| < M/2^(margin + extra + 1) and b < 2^extra: an integer
-        // over D, or one over D times a small factor D lacks.
-        fmpz_mul(scaled_.get(), residue_.get(), denominator->get());
-        fmpz_mod(scaled_.get(), scaled_.get(), modulus);
-        const flint_bitcnt_t bits = fmpz_bits(modulus);
-        if (bits > kMarginBits + kExtraDenominatorBits + 2) {
-            fmpz_fdiv_q_2exp(numerator_bound_.get(), modulus,
-                             kMarginBits + kExtraDenominatorBits + 1);
-            fmpz_one(denominator_bound_.get());
-            fmpz_mul_2exp(denominator_bound_.get(), denominator_bound_.get(),
-                          kExtraDenominatorBits);
-            over_denominator =
-                fmpq_reconstruct_fmpz_2(number.value.get(), scaled_.get(), modulus,
-                                        numerator_bound_.get(), denominator_bound_.get()) != 0;
-            if (over_denominator) {
-                fmpq_div_fmpz(number.value.get(), number.value.get(), denominator->get());
-            }
-        }
-    }
-    if (!fmpz_is_zero(residue_.get()) && !over_denominator &&
-        fmpq_reconstruct_fmpz(number.value.get(), residue_.get(), modulus) == 0) {
+    } else if ((denominator == nullptr || !over_denominator(number, *denominator)) &&
+               fmpq_reconstruct_fmpz(number.value.get(), residue_.get(), lift_.modulus_.get()) ==
+                   0) {
         return false;
     }
     number.value_primes = number.found_with = lift_.primes_.size();
+    return true;
+}
+
+bool RationalLift::Attempt::over_denominator(LiftedNumber& number, const Integer& denominator) {
+    // D·r as a rational a/b with |a| < M/2^(margin + extra + 1) and b < 2^extra: an integer
+    // over D, or one over D times a small factor D lacks.
+    const fmpz* modulus = lift_.modulus_.get();
+    const flint_bitcnt_t bits = fmpz_bits(modulus);
+    if (bits <= kMarginBits + kExtraDenominatorBits + 2) {
+        return false;
+    }
+    fmpz_mul(scaled_.get(), residue_.get(), denominator.get());
+    fmpz_mod(scaled_.get(), scaled_.get(), modulus);
+    fmpz_fdiv_q_2exp(numerator_bound_.get(), modulus, kMarginBits + kExtraDenominatorBits + 1);
+    fmpz_one(denominator_bound_.get());
+    fmpz_mul_2exp(denominator_bound_.get(), denominator_bound_.get(), kExtraDenominatorBits);
+    if (fmpq_reconstruct_fmpz_2(number.value.get(), scaled_.get(), modulus, numerator_bound_.get(),
+                                denominator_bound_.get()) == 0) {
+        return false;
+    }
+    fmpq_div_fmpz(number.value.get(), number.value.get(), denominator.get());
     return true;
 }
 
@@ -147,7 +147,12 @@ std::optional<Integer> RationalLift::Attempt::common_denominator(
     fmpz_lll(lattice, nullptr, context);
     // No accident: the first vector short against the lattice's ordinary shortest vector
     // (about M^(k/(k+1))) and against the second reduced vector (a planted short vector leaves
-    // the others about (M^k/|v|)^(1/k); a random lattice's are all alike).
+    // the others about (M^k/|v|)^(1/k); a random lattice's are all alike). The second test is
+    // the one that matters in practice: when the companions are determined and the number is
+    // not, the lattice holds a two-dimensional part whose minima are both about √(M·P) for
+    // companions of P bits — short enough for the first test, and a multiplier chosen from
+    // this very residue, so the value over it would pass any size margin. Its two minima are
+    // alike, which the second test refuses (tested).
     const auto longest_entry = [&](slong row) {
         flint_bitcnt_t bits = 0;
         for (slong j = 0; j <= k; ++j) {
@@ -182,9 +187,21 @@ bool RationalLift::Attempt::reconstruct_sharing(
         }
         return true;
     }
-    if (!(hint == denominator) && reconstruct(number, &hint)) {
-        denominator = hint;
+    // reconstruct() failed past its check of a kept value: residue_ is the number's, and
+    // rational reconstruction of it has failed; only other denominators are left to try.
+    const auto found_over = [&](const Integer& d) {
+        if (!over_denominator(number, d)) {
+            return false;
+        }
+        number.value_primes = number.found_with = lift_.primes_.size();
         return true;
+    };
+    if (!(hint == denominator) && found_over(hint)) {
+        fmpz_lcm(denominator.get(), denominator.get(), hint.get());
+        return true;
+    }
+    if (fmpz_bits(lift_.modulus_.get()) > kLatticeBits) {
+        return false;
     }
     std::vector<LiftedNumber*> together{&number};
     for (LiftedNumber* other : companions()) {
@@ -196,7 +213,8 @@ bool RationalLift::Attempt::reconstruct_sharing(
     }
     fmpz_lcm(denominator.get(), denominator.get(), common->get());
     hint = denominator;
-    return reconstruct(number, &denominator);
+    combine(number);  // the lattice combined the companions' residues since
+    return found_over(denominator);
 }
 
 }  // namespace locus::algebra::modular

@@ -26,6 +26,7 @@
 
 #include <flint/flint.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -114,17 +115,21 @@ class RationalLift {
         // polynomial): first over `denominator` (the group's, as far as known), then as a
         // plain rational, then over `hint` (the last denominator the caller found, often
         // shared between groups), and last over a denominator found by common_denominator()
-        // of the number with `companions()` (a few more of its group; asked only then). The
-        // group's denominator takes in only what is reliable: those found by the lattice or
-        // taken from the hint, and the denominators of values a later prime confirmed (a
-        // rational reconstruction from too few primes can succeed by accident, and its
-        // denominator would make every integer of the group too large).
+        // of the number with `companions()` (a few more of its group, see companions_near;
+        // asked only then, and not past kLatticeBits). The group's denominator takes in, by
+        // lcm, only what is reliable: the hint when a value is found over it, the lattice's
+        // denominators, and the denominators of values a later prime confirmed (a rational
+        // reconstruction from too few primes can succeed by accident, and its denominator
+        // would make every integer of the group too large).
         bool reconstruct_sharing(LiftedNumber& number, Integer& denominator, Integer& hint,
                                  const std::function<std::vector<LiftedNumber*>()>& companions);
 
       private:
         // residue_ ← the number's residues combined, in [0, M).
         void combine(const LiftedNumber& number);
+        // The number's value from residue_ over `denominator` (see reconstruct), without
+        // marking it found.
+        bool over_denominator(LiftedNumber& number, const Integer& denominator);
 
         const RationalLift& lift_;
         fmpz_comb_t comb_;
@@ -148,5 +153,31 @@ class RationalLift {
     Integer modulus_{1};
     std::size_t next_attempt_ = 0;
 };
+
+// Up to `count` numbers of a group of `size` near position t (after it first, then before
+// it), for common_denominator: not t itself, not `skip` (a number known to be 1, such as a
+// monic polynomial's leading coefficient, whose residues say nothing), and none whose residues
+// are all zero (a zero says nothing of a denominator). `number_at(u)` is the u-th number.
+template <typename NumberAt>
+std::vector<LiftedNumber*> companions_near(std::size_t t, std::size_t size, std::size_t count,
+                                           std::size_t skip, NumberAt number_at) {
+    std::vector<LiftedNumber*> out;
+    const auto consider = [&](std::size_t u) {
+        if (u == t || u == skip || out.size() >= count) {
+            return;
+        }
+        LiftedNumber& n = number_at(u);
+        if (std::any_of(n.residues.begin(), n.residues.end(), [](mp_limb_t r) { return r != 0; })) {
+            out.push_back(&n);
+        }
+    };
+    for (std::size_t u = t + 1; u < size && out.size() < count; ++u) {
+        consider(u);
+    }
+    for (std::size_t u = t; u-- > 0 && out.size() < count;) {
+        consider(u);
+    }
+    return out;
+}
 
 }  // namespace locus::algebra::modular

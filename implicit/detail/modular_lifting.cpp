@@ -23,13 +23,9 @@ bool NormalizedLifting::add(const std::vector<ulong>& image, ulong p) {
         // The entries share the pivot's denominator (they are a primitive integer vector
         // divided by its pivot entry): as integers over it they need about half the primes.
         const bool found = attempt.reconstruct_sharing(numbers_[j], denominator_, hint_, [&] {
-            std::vector<algebra::modular::LiftedNumber*> companions;
-            for (std::size_t u = 0; u < numbers_.size() && companions.size() < 3; ++u) {
-                if (u != j && u != pivot_) {
-                    companions.push_back(&numbers_[u]);
-                }
-            }
-            return companions;
+            return algebra::modular::companions_near(
+                j, numbers_.size(), 7, pivot_,
+                [&](std::size_t u) -> algebra::modular::LiftedNumber& { return numbers_[u]; });
         });
         if (!found) {
             return false;

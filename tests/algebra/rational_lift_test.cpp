@@ -199,6 +199,96 @@ TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
     }
 }
 
+// The lattice's second test (its first vector well below the second): three numbers already
+// determined by the primes (small numerators over a small denominator) and one that is not (a
+// random residue) make a lattice whose two shortest vectors are alike and short enough for the
+// first test — and a multiplier chosen from the random residue itself, over which any value
+// would pass a size margin. No denominator may come out of it, at any number of primes.
+TEST(RationalLift, NoDenominatorFromDeterminedCompanionsAndOneUndeterminedNumber) {
+    std::mt19937_64 random(5);
+    const Rational a(12345, 977), b(-4321, 977), c(999, 977);
+    std::vector<LiftedNumber> numbers(4);
+    RationalLift lift;
+    mp_limb_t p = (1u << 31) + 1;
+    for (int k = 0; k < 30; ++k) {
+        p = prime_below(p);
+        numbers[0].residues.push_back(random() % p);
+        numbers[1].residues.push_back(residue_of(a, p));
+        numbers[2].residues.push_back(residue_of(b, p));
+        numbers[3].residues.push_back(residue_of(c, p));
+        lift.add_prime(p);
+        RationalLift::Attempt attempt(lift);
+        std::vector<LiftedNumber*> all{&numbers[0], &numbers[1], &numbers[2], &numbers[3]};
+        EXPECT_FALSE(attempt.common_denominator(all).has_value()) << k + 1 << " primes";
+    }
+}
+
+// Sharing through reconstruct_sharing: a group whose numbers share a 300-bit denominator finds
+// it by a lattice of a number and its companions (companions_near, which leaves out the zero),
+// and takes the others as integers over it — every value exact and confirmed by a later prime
+// with fewer primes than rational reconstruction of one of them needs.
+TEST(RationalLift, ReconstructSharingFindsTheGroupsDenominator) {
+    std::mt19937_64 random(17);
+    const auto big = [&](int digits) {
+        std::string text = std::to_string(1 + random() % 9);
+        for (int i = 1; i < digits; ++i) {
+            text += std::to_string(random() % 10);
+        }
+        Integer value;
+        fmpz_set_str(value.get(), text.c_str(), 10);
+        return value;
+    };
+    const Integer denominator = big(90);  // about 300 bits, numerators too
+    std::vector<Rational> truth;
+    for (int i = 0; i < 10; ++i) {
+        Rational q;
+        if (i == 3) {  // a zero, which no lattice takes as a companion
+            truth.push_back(q);
+            continue;
+        }
+        fmpz_set(fmpq_numref(q.get()), big(90).get());
+        fmpz_set(fmpq_denref(q.get()), denominator.get());
+        fmpq_canonicalise(q.get());
+        truth.push_back(q);
+    }
+    std::vector<LiftedNumber> numbers(truth.size());
+    RationalLift lift;
+    Integer group_denominator(1), hint(1);
+    mp_limb_t p = (1u << 31) + 1;
+    bool all = false;
+    for (int k = 0; k < 40 && !all; ++k) {
+        p = prime_below(p);
+        for (std::size_t i = 0; i < truth.size(); ++i) {
+            numbers[i].residues.push_back(residue_of(truth[i], p));
+        }
+        lift.add_prime(p);
+        RationalLift::Attempt attempt(lift);
+        all = true;
+        for (std::size_t t = 0; t < numbers.size(); ++t) {
+            const bool found =
+                attempt.reconstruct_sharing(numbers[t], group_denominator, hint, [&] {
+                    const std::vector<LiftedNumber*> near =
+                        companions_near(t, numbers.size(), 7, numbers.size(),
+                                        [&](std::size_t u) -> LiftedNumber& { return numbers[u]; });
+                    for (const LiftedNumber* n : near) {
+                        EXPECT_NE(n, &numbers[3]);  // the zero is no companion
+                        EXPECT_NE(n, &numbers[t]);
+                    }
+                    return near;
+                });
+            all = found && numbers[t].confirmed() && all;
+        }
+    }
+    ASSERT_TRUE(all);
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        EXPECT_TRUE(fmpq_equal(numbers[i].value.get(), truth[i].get())) << i;
+    }
+    EXPECT_TRUE(fmpz_divisible(group_denominator.get(), denominator.get()));
+    EXPECT_TRUE(hint == group_denominator);
+    // Rational reconstruction of one number needs about 600 bits (20 primes).
+    EXPECT_LE(lift.primes(), 16u);
+}
+
 TEST(RationalLift, AttemptsAfterEveryPrimeThenSpacedOut) {
     RationalLift lift;
     std::vector<std::size_t> attempts;
