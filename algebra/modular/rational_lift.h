@@ -142,10 +142,13 @@ class RationalLift {
     // The largest factor, in bits, that a number's denominator may have beyond the one given.
     static constexpr flint_bitcnt_t kExtraDenominatorBits = 64;
     // No lattices past this modulus: their reduction grows with the square of the entries'
-    // size, and every attempt whose numbers are not ready tries one (an integer of 36 000
-    // digits, 5 000 primes: 5.1 → 12.4 s of lifting with no limit). The Gröbner suite's lifts
-    // stay far below it (cyclic-8: about 850 bits).
-    static constexpr flint_bitcnt_t kLatticeBits = 16384;
+    // size, and an attempt whose numbers are not ready may try one that fails (an integer of
+    // 36 000 digits, 5 000 primes: 5.1 → 12.4 s of lifting with no limit; katsura-6 with x0
+    // scaled by a 5 000-bit rational, whose denominators are not shared: 0.03 → 0.44 s at
+    // 16 384 bits, 0.25 s at this limit). The Gröbner route's lifts stay below it (cyclic-8:
+    // about 850 bits, katsura-12 1 100). Spacing a group's failed lattices by two primes
+    // instead cost cyclic-8 two primes more (0.3 s) to save that case 0.06 s.
+    static constexpr flint_bitcnt_t kLatticeBits = 4096;
 
   private:
     std::vector<mp_limb_t> primes_;

@@ -381,7 +381,7 @@ TEST(Modular, LiftingNeedsFewerPrimesThanTheLargestRational) {
 // A coefficient with a small denominator is lifted as an integer over it (D·r = a/b with b
 // below 2^64, D = 1 here), which needs about half the primes of a rational reconstruction
 // (|n| and d both below √(M/2)): this basis has a³ − (N/3)·b with a 5 090-bit N, which took
-// 331 primes and now 172. (Hostile sizes: lattices stop past 16 384 bits of modulus, so a
+// 331 primes and now 172. (Hostile sizes: lattices stop past 4 096 bits of modulus, so a
 // 36 000-digit constant costs no lattice reductions: 12.4 → 1.0 s.)
 TEST(Modular, ASmallDenominatorNeedsHalfThePrimesOfARational) {
     const IdealFile file = parse_ideal_file("vars: a,b\na^2*b-(2*10^38)^20\na*b^3-3\n");
