@@ -50,6 +50,37 @@ Rational random_rational(std::mt19937_64& random, int digits) {
     return q;
 }
 
+// A positive integer of `digits` random decimal digits.
+Integer random_integer(std::mt19937_64& random, int digits) {
+    std::string text = std::to_string(1 + random() % 9);
+    for (int i = 1; i < digits; ++i) {
+        text += std::to_string(random() % 10);
+    }
+    Integer value;
+    fmpz_set_str(value.get(), text.c_str(), 10);
+    return value;
+}
+
+// Moves p to the next prime below it, gives every number its residue there (`residue(i, p)`)
+// and adds p to the lift.
+template <typename Residue>
+void add_next_prime(RationalLift& lift, mp_limb_t& p, std::vector<LiftedNumber>& numbers,
+                    Residue residue) {
+    p = prime_below(p);
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+        numbers[i].residues.push_back(residue(i, p));
+    }
+    lift.add_prime(p);
+}
+
+std::vector<LiftedNumber*> pointers_to(std::vector<LiftedNumber>& numbers) {
+    std::vector<LiftedNumber*> out;
+    for (LiftedNumber& n : numbers) {
+        out.push_back(&n);
+    }
+    return out;
+}
+
 TEST(RationalLift, GivesBackRationalsOfEverySize) {
     std::mt19937_64 random(3);
     for (const bool wide_primes : {false, true}) {
@@ -125,15 +156,7 @@ TEST(RationalLift, AValueStopsBeingConfirmedWhenAPrimeDisagrees) {
 // denominator has a small factor more. Random residues give no denominator (no accident).
 TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
     std::mt19937_64 random(11);
-    const auto big = [&](int digits) {
-        std::string text = std::to_string(1 + random() % 9);
-        for (int i = 1; i < digits; ++i) {
-            text += std::to_string(random() % 10);
-        }
-        Integer value;
-        fmpz_set_str(value.get(), text.c_str(), 10);
-        return value;
-    };
+    const auto big = [&](int digits) { return random_integer(random, digits); };
     const Integer denominator = big(150);  // about 500 bits; numerators too
     std::vector<Rational> truth;
     for (int i = 0; i < 12; ++i) {
@@ -154,12 +177,11 @@ TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
     mp_limb_t p = (1u << 31) + 1;
     std::optional<Integer> found;
     std::size_t primes_at_found = 0;
+    const auto residue_of_truth = [&](std::size_t i, mp_limb_t q) {
+        return residue_of(truth[i], q);
+    };
     for (int k = 0; k < 60 && !found; ++k) {
-        p = prime_below(p);
-        for (std::size_t i = 0; i < truth.size(); ++i) {
-            numbers[i].residues.push_back(residue_of(truth[i], p));
-        }
-        lift.add_prime(p);
+        add_next_prime(lift, p, numbers, residue_of_truth);
         RationalLift::Attempt attempt(lift);
         std::vector<LiftedNumber*> four{&numbers[0], &numbers[1], &numbers[2], &numbers[3]};
         found = attempt.common_denominator(four);
@@ -188,14 +210,11 @@ TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
     RationalLift noise_lift;
     p = (1u << 31) + 1;
     for (int k = 0; k < 40; ++k) {
-        p = prime_below(p);
-        for (LiftedNumber& n : noise) {
-            n.residues.push_back(random() % p);
-        }
-        noise_lift.add_prime(p);
+        add_next_prime(noise_lift, p, noise,
+                       [&](std::size_t, mp_limb_t q) { return random() % q; });
         RationalLift::Attempt noise_attempt(noise_lift);
-        std::vector<LiftedNumber*> all{&noise[0], &noise[1], &noise[2], &noise[3]};
-        EXPECT_FALSE(noise_attempt.common_denominator(all).has_value()) << k + 1 << " primes";
+        EXPECT_FALSE(noise_attempt.common_denominator(pointers_to(noise)).has_value())
+            << k + 1 << " primes";
     }
 }
 
@@ -210,16 +229,14 @@ TEST(RationalLift, NoDenominatorFromDeterminedCompanionsAndOneUndeterminedNumber
     std::vector<LiftedNumber> numbers(4);
     RationalLift lift;
     mp_limb_t p = (1u << 31) + 1;
+    const Rational* determined[] = {nullptr, &a, &b, &c};
     for (int k = 0; k < 30; ++k) {
-        p = prime_below(p);
-        numbers[0].residues.push_back(random() % p);
-        numbers[1].residues.push_back(residue_of(a, p));
-        numbers[2].residues.push_back(residue_of(b, p));
-        numbers[3].residues.push_back(residue_of(c, p));
-        lift.add_prime(p);
+        add_next_prime(lift, p, numbers, [&](std::size_t i, mp_limb_t q) {
+            return i == 0 ? random() % q : residue_of(*determined[i], q);
+        });
         RationalLift::Attempt attempt(lift);
-        std::vector<LiftedNumber*> all{&numbers[0], &numbers[1], &numbers[2], &numbers[3]};
-        EXPECT_FALSE(attempt.common_denominator(all).has_value()) << k + 1 << " primes";
+        EXPECT_FALSE(attempt.common_denominator(pointers_to(numbers)).has_value())
+            << k + 1 << " primes";
     }
 }
 
@@ -229,15 +246,7 @@ TEST(RationalLift, NoDenominatorFromDeterminedCompanionsAndOneUndeterminedNumber
 // with fewer primes than rational reconstruction of one of them needs.
 TEST(RationalLift, ReconstructSharingFindsTheGroupsDenominator) {
     std::mt19937_64 random(17);
-    const auto big = [&](int digits) {
-        std::string text = std::to_string(1 + random() % 9);
-        for (int i = 1; i < digits; ++i) {
-            text += std::to_string(random() % 10);
-        }
-        Integer value;
-        fmpz_set_str(value.get(), text.c_str(), 10);
-        return value;
-    };
+    const auto big = [&](int digits) { return random_integer(random, digits); };
     const Integer denominator = big(90);  // about 300 bits, numerators too
     std::vector<Rational> truth;
     for (int i = 0; i < 10; ++i) {
@@ -257,11 +266,8 @@ TEST(RationalLift, ReconstructSharingFindsTheGroupsDenominator) {
     mp_limb_t p = (1u << 31) + 1;
     bool all = false;
     for (int k = 0; k < 40 && !all; ++k) {
-        p = prime_below(p);
-        for (std::size_t i = 0; i < truth.size(); ++i) {
-            numbers[i].residues.push_back(residue_of(truth[i], p));
-        }
-        lift.add_prime(p);
+        add_next_prime(lift, p, numbers,
+                       [&](std::size_t i, mp_limb_t q) { return residue_of(truth[i], q); });
         RationalLift::Attempt attempt(lift);
         all = true;
         for (std::size_t t = 0; t < numbers.size(); ++t) {

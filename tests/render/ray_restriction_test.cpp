@@ -125,6 +125,19 @@ std::vector<ExactCoefficient> exact_restriction(const std::string& equation,
     return result;
 }
 
+// Σ|c|·(|m| + |h|)^|α| over f's terms for the line m + x·h: what any rounding of a
+// restriction is measured against.
+double terms_magnitude(const algebra::CompiledPolynomial& f, const DoubleDoubleLine& line) {
+    double magnitude = 0.0;
+    for (const algebra::CompiledTerm& term : f.terms()) {
+        magnitude += std::abs(term.coefficient) *
+                     std::pow(std::abs(line.origin_hi.x) + std::abs(line.direction_hi.x), term.ex) *
+                     std::pow(std::abs(line.origin_hi.y) + std::abs(line.direction_hi.y), term.ey) *
+                     std::pow(std::abs(line.origin_hi.z) + std::abs(line.direction_hi.z), term.ez);
+    }
+    return magnitude;
+}
+
 TEST(LineRestrictor, MatchesDirectEvaluation) {
     for (int seed = 0; seed < test::seed_count(30); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
@@ -173,15 +186,7 @@ TEST(LineRestrictor, DoubleDoubleBallsHoldTheExactRestriction) {
             line, LineError{}, f.double_double_coefficient_error());
         ASSERT_TRUE(ball.certified);
         const std::vector<ExactCoefficient> exact = exact_restriction(f.equation(), line);
-        // Σ|c|·(|m| + |h|)^|α|: what any rounding is measured against.
-        double magnitude = 0.0;
-        for (const algebra::CompiledTerm& term : f.terms()) {
-            magnitude +=
-                std::abs(term.coefficient) *
-                std::pow(std::abs(line.origin_hi.x) + std::abs(line.direction_hi.x), term.ex) *
-                std::pow(std::abs(line.origin_hi.y) + std::abs(line.direction_hi.y), term.ey) *
-                std::pow(std::abs(line.origin_hi.z) + std::abs(line.direction_hi.z), term.ez);
-        }
+        const double magnitude = terms_magnitude(f, line);
         for (int k = 0; k <= ball.polynomial.degree; ++k) {
             const auto at = static_cast<std::size_t>(k);
             const double exact_value = at < exact.size() ? exact[at].value : 0.0;
@@ -237,14 +242,7 @@ TEST(LineRestrictor, BallsHoldTheExactRestrictionWithAndWithoutHorner) {
             line.origin_hi, line.direction_hi, LineError{}, f.coefficient_error());
         ASSERT_TRUE(ball.certified) << equation;
         const std::vector<ExactCoefficient> exact = exact_restriction(f.equation(), line);
-        double magnitude = 0.0;
-        for (const algebra::CompiledTerm& term : f.terms()) {
-            magnitude +=
-                std::abs(term.coefficient) *
-                std::pow(std::abs(line.origin_hi.x) + std::abs(line.direction_hi.x), term.ex) *
-                std::pow(std::abs(line.origin_hi.y) + std::abs(line.direction_hi.y), term.ey) *
-                std::pow(std::abs(line.origin_hi.z) + std::abs(line.direction_hi.z), term.ez);
-        }
+        const double magnitude = terms_magnitude(f, line);
         for (int k = 0; k <= ball.polynomial.degree; ++k) {
             const auto at = static_cast<std::size_t>(k);
             const bool within = at < exact.size()
