@@ -154,7 +154,10 @@ int run_implicit_bench(const ImplicitBenchArgs& args) {
                         groebner_seconds < 0
                             ? (">" + std::to_string(std::lround(args.limit_seconds))).c_str()
                             : shown(groebner_seconds).c_str(),
-                        shown(resultant_seconds).c_str(), singular_text.c_str());
+                        resultant_seconds < 0
+                            ? (">" + std::to_string(std::lround(args.limit_seconds))).c_str()
+                            : shown(resultant_seconds).c_str(),
+                        singular_text.c_str());
         }
         std::cout.flush();
     }
