@@ -644,10 +644,14 @@ double bezout_bound(std::span<const Polynomial> generators) {
 // cases that belong to the modular route grow faster than a bit per four elements (cyclic-8:
 // 69 bits with 216 elements, cyclic-7: 68 with 218, katsura-10: 72 with 29) and the others do
 // not (eco-10: 69 bits with 466, 101 with 477; eco-11: 69 with 864, 156 with 964; noon-7: 38
-// with 523). So above the shape the signature algorithm runs until an element of b ≥ 64 bits
+// with 523). So above the shape the signature algorithm runs until an element of b ≥ 32 bits
 // joins a basis of fewer than 4·b elements, or 2 000 000 reduction steps, and the modular
-// algorithm takes over; the probe costs cyclic-7 0.1 s and cyclic-8 0.3 s (at 128 bits within
-// 512 elements it cost 1.7 s). Neither a budget of steps alone (cyclic-7 spent 1 s in
+// algorithm takes over. Where the cases first pass 32 bits (elements then): cyclic-7 86 and
+// cyclic-8 114, below the line of 128 (and below it again at 40 bits: 162 and 163 against 176
+// and 184), katsura-10 18; eco-10 319, eco-11 477, noon-7 490, 2.5–3.8 times above it (and
+// above it at every larger size: eco-10 388 at 41 bits, 466 at 69). The probe costs cyclic-7
+// 0.012 s and cyclic-8 0.075 s (0.09 s and 0.25 s when the line started at 64 bits, 1.7 s at
+// 128 bits within 512 elements). Neither a budget of steps alone (cyclic-7 spent 1 s in
 // it) nor the size of a basis modulo p separated these cases. Under lex and elimination orders
 // FGLM wins on zero-dimensional ideals (katsura5_lex 1.6 ms against 11 ms), while the small
 // suite cases finish by signatures in 3 to 149 reduction steps: a budget of 300. A square (or
@@ -743,8 +747,8 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     constexpr double kModularShape = 4500;  // Bézout's bound times the number of variables
     constexpr double kOtherOrderModularShape = 150;
     constexpr std::size_t kDegreeOrderBudget = 80000, kOtherOrderBudget = 300;
-    // Growth: 64 bits within 256 elements, 128 within 512, … (four elements a bit).
-    constexpr std::size_t kGrowthBits = 64, kGrowthBasis = 256, kLargeShapeBudget = 2000000;
+    // Growth: 32 bits within 128 elements, 64 within 256, … (four elements a bit).
+    constexpr std::size_t kGrowthBits = 32, kGrowthBasis = 128, kLargeShapeBudget = 2000000;
     GroebnerResult result;
     const double shape = bezout_bound(generators) * static_cast<double>(ring->num_vars());
     const bool skip_probe = !degree_order && shape >= kOtherOrderModularShape &&
