@@ -49,6 +49,9 @@ void print_modular_stats(const algebra::ModularStats& s) {
                  s.certified ? "certified over Q: the input reduces to zero and every S-pair "
                                "left by the criteria reduces to zero"
                              : "NOT certified (--no-certify): the basis is probabilistic");
+    if (!s.probe.empty()) {
+        std::fprintf(stderr, "auto's probe: %s (%.6f s)\n", s.probe.c_str(), s.probe_seconds);
+    }
     if (s.certified) {
         const algebra::CertificationWork& work = s.certification;
         std::fprintf(stderr, "certification: %zu reduction steps", work.reduction_steps);

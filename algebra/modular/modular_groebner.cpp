@@ -136,32 +136,21 @@ void add_to_element(LiftedElement& old, const ModularPolynomial& g, std::size_t 
 // Appends a basis modulo p to the group's residues, its elements on `threads` threads.
 void add_to_group(Group& group, const std::vector<ModularPolynomial>& basis, std::uint32_t p,
                   const MonomialLayout& layout, int threads) {
-    const std::size_t words = layout.words();
     if (group.primes() == 0) {
-        group.elements.clear();
+        group.elements.assign(basis.size(), LiftedElement{});
         group.denominators.assign(basis.size(), Integer(1));
-        for (const ModularPolynomial& g : basis) {
-            LiftedElement element(g.size());
-            for (std::size_t i = 0; i < g.size(); ++i) {
-                const std::uint64_t* m = g.monomial(i, words);
-                element[i].monomial.assign(m, m + words);
-                element[i].coefficient.residues.push_back(g.coefficients[i]);
-            }
-            group.elements.push_back(std::move(element));
-        }
-    } else {
-        over_elements(threads, basis.size(), [&](std::size_t begin, std::size_t end) {
-            for (std::size_t e = begin; e < end; ++e) {
-                add_to_element(group.elements[e], basis[e], group.primes(), layout);
-            }
-        });
     }
+    over_elements(threads, basis.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t e = begin; e < end; ++e) {
+            add_to_element(group.elements[e], basis[e], group.primes(), layout);
+        }
+    });
     group.lift.add_prime(p);
 }
 
 // One coefficient of element e, sharing the element's denominator (rational_lift.h's
-// reconstruct_sharing), with seven more coefficients of the element (the next ones, or the last
-// ones) as companions for a lattice. Why: the coefficients of an element of a reduced basis
+// reconstruct_sharing), with seven more coefficients of the element near it as companions for a
+// lattice (companions_near). Why: the coefficients of an element of a reduced basis
 // over Q share most of their denominator, and the numerators over it need about half the bits
 // of the rationals (cyclic-8: 672 of 1 334 bits, katsura-10: 407 of 800), but a denominator
 // found from one coefficient costs the full bits again (1 309 for cyclic-8 even taking the
@@ -193,9 +182,10 @@ bool reconstruct_term(modular::RationalLift::Attempt& attempt, Group& group, std
 // 383 000 coefficients, each reconstructed once; taking every value as soon as its primes
 // allowed made the lifting 2.2 → 2.7 s).
 // On `threads` threads, each with its own attempt, the elements are handed out in the same
-// order, one at a time, and none past a known failure: the coefficients are independent. Which
-// coefficient fails first, and so the basis, do not depend on the threads; the denominators
-// tried (each thread's hint, reconstruct_term) may, and with them the number of primes.
+// order, one at a time, and none past a known failure: the coefficients are independent. The
+// basis does not depend on the threads; through each thread's hint (reconstruct_term) the
+// denominators tried may, and with them which coefficient fails first and the number of
+// primes.
 // Polls `deadline` per element (the last reconstruction of a large basis takes a quarter of a
 // second: katsura-10).
 std::optional<std::vector<Polynomial>> reconstruct(
@@ -649,20 +639,20 @@ double bezout_bound(std::span<const Polynomial> generators) {
 // algorithm takes over. Where the cases first pass 32 bits (elements then): cyclic-7 86 and
 // cyclic-8 114, below the line of 128 (and below it again at 40 bits: 162 and 163 against 176
 // and 184), katsura-10 18; eco-10 319, eco-11 477, noon-7 490, 2.5–3.8 times above it (and
-// above it at every larger size: eco-10 388 at 41 bits, 466 at 69). The probe costs cyclic-7
-// 0.012 s and cyclic-8 0.075 s (0.09 s and 0.25 s when the line started at 64 bits, 1.7 s at
-// 128 bits within 512 elements). Neither a budget of steps alone (cyclic-7 spent 1 s in
-// it) nor the size of a basis modulo p separated these cases. Under lex and elimination orders
-// FGLM wins on zero-dimensional ideals (katsura5_lex 1.6 ms against 11 ms), while the small
-// suite cases finish by signatures in 3 to 149 reduction steps: a budget of 300. A square (or
-// overdetermined) system of shape B·n ≥ 150 under such an order skips the probe: cyclic5_lex
-// (600) spent 2 ms in it before the modular route answered anyway (4.0 ms in all against 2.0
-// directly; Singular 1.9 ms), while the cases the probe answers are smaller (katsura4_lex 32,
-// cyclic4_lex 96) or have fewer generators than variables (the elimination ideals of
-// parametrizations, often positive-dimensional, where the modular route has no FGLM).
-// katsura5_lex (80) still probes and goes modular (4.1 ms; Singular 5.5 ms): shape does not
-// separate it from cyclic4_lex, nor growth from katsura4_lex (64 bits within 256 elements would
-// send katsura4_lex modular, 0.3 → 0.67 ms).
+// above it at every larger size: eco-10 388 at 41 bits, 466 at 69; read with a throwaway
+// print). The probe costs cyclic-7 0.006 s and cyclic-8 0.036 s (`--stats` prints it; the line
+// at 64 bits cost them about 0.09 s and 0.25 s, at 128 bits within 512 elements cyclic-8 1.7 s).
+// Neither a budget of steps alone (cyclic-7 spent 1 s in it) nor the size of a basis modulo p
+// separated these cases. Under lex and elimination orders FGLM wins on zero-dimensional ideals
+// (katsura5_lex 1.6 ms against 11 ms), while the small suite cases finish by signatures in 3 to 149
+// reduction steps: a budget of 300. A square (or overdetermined) system of shape B·n ≥ 150 under
+// such an order skips the probe: cyclic5_lex (600) spent 2 ms in it before the modular route
+// answered anyway (4.0 ms in all against 2.0 directly; Singular 1.9 ms), while the cases the probe
+// answers are smaller (katsura4_lex 32, cyclic4_lex 96) or have fewer generators than variables
+// (the elimination ideals of parametrizations, often positive-dimensional, where the modular route
+// has no FGLM). katsura5_lex (80) still probes and goes modular (4.1 ms; Singular 5.5 ms): shape
+// does not separate it from cyclic4_lex, nor growth from katsura4_lex (64 bits within 256 elements
+// would send katsura4_lex modular, 0.3 → 0.67 ms).
 namespace {
 
 // The modular route run on a thread of its own, cancelled (and waited for) on destruction
@@ -797,11 +787,17 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
         }
         ahead.emplace(generators, beside);
     }
+    std::string probe = "none: a square system of shape " +
+                        std::to_string(static_cast<long>(shape)) + " under a non-degree order";
     if (skip_probe) {
         result.outcome = GroebnerOutcome::stopped_size;  // as if the probe had handed over
     } else {
         result = signature_groebner_or_buchberger(generators, probing);
+        probe = "signatures stopped after " + std::to_string(result.stats.reduction_steps) +
+                " reduction steps: " + result.reason;
     }
+    const double probe_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     probe_running = false;
     // Stopped by the probe's budget or growth rule, not by the caller's own limits.
     const bool callers_limit =
@@ -820,6 +816,10 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     }
     GroebnerResult modular =
         ahead ? ahead->result(stats) : modular_groebner(generators, modular_options, stats);
+    if (stats != nullptr) {
+        stats->probe = probe;
+        stats->probe_seconds = skip_probe ? 0.0 : probe_seconds;
+    }
     if (modular.outcome == GroebnerOutcome::unable) {
         // No stable lift within max_primes (coefficients of tens of thousands of digits): the
         // computation over Q gets there without guessing sizes.

@@ -59,6 +59,11 @@ bool RationalLift::attempt_due() {
 RationalLift::Attempt::Attempt(const RationalLift& lift) : lift_(lift) {
     fmpz_comb_init(comb_, lift.primes_.data(), static_cast<slong>(lift.primes_.size()));
     fmpz_comb_temp_init(temp_, comb_);
+    // over_denominator's bounds, the same for every number of the attempt.
+    fmpz_fdiv_q_2exp(numerator_bound_.get(), lift.modulus_.get(),
+                     kMarginBits + kExtraDenominatorBits + 1);
+    fmpz_one(denominator_bound_.get());
+    fmpz_mul_2exp(denominator_bound_.get(), denominator_bound_.get(), kExtraDenominatorBits);
 }
 
 RationalLift::Attempt::~Attempt() {
@@ -115,9 +120,6 @@ bool RationalLift::Attempt::over_denominator(LiftedNumber& number, const Integer
     }
     fmpz_mul(scaled_.get(), residue_.get(), denominator.get());
     fmpz_mod(scaled_.get(), scaled_.get(), modulus);
-    fmpz_fdiv_q_2exp(numerator_bound_.get(), modulus, kMarginBits + kExtraDenominatorBits + 1);
-    fmpz_one(denominator_bound_.get());
-    fmpz_mul_2exp(denominator_bound_.get(), denominator_bound_.get(), kExtraDenominatorBits);
     if (fmpq_reconstruct_fmpz_2(number.value.get(), scaled_.get(), modulus, numerator_bound_.get(),
                                 denominator_bound_.get()) == 0) {
         return false;
@@ -180,9 +182,11 @@ std::optional<Integer> RationalLift::Attempt::common_denominator(
 bool RationalLift::Attempt::reconstruct_sharing(
     LiftedNumber& number, Integer& denominator, Integer& hint,
     const std::function<std::vector<LiftedNumber*>()>& companions) {
+    // A value's denominator joins the group's once, when a later prime first confirms it.
+    const bool was_confirmed = number.confirmed();
     if (reconstruct(number, &denominator)) {
         const fmpz* d = fmpq_denref(number.value.get());
-        if (number.confirmed() && !fmpz_is_one(d)) {
+        if (!was_confirmed && number.confirmed() && !fmpz_is_one(d)) {
             fmpz_lcm(denominator.get(), denominator.get(), d);
         }
         return true;

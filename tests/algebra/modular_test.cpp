@@ -113,10 +113,16 @@ TEST(Modular, AutomaticSkipsTheLexProbeOnlyForLargeSquareSystems) {
             pairs_reported = pairs_reported || p.stage == GroebnerProgress::Stage::pairs;
         };
         bool used_modular = false;
+        ModularStats stats;
         const GroebnerResult r =
-            groebner_automatic(ideal.generators, options, nullptr, &used_modular);
+            groebner_automatic(ideal.generators, options, &stats, &used_modular);
         EXPECT_EQ(pairs_reported, probed);
         EXPECT_EQ(used_modular, modular);
+        // The statistics say why the probe handed over (`--stats`: "auto's probe").
+        if (modular) {
+            EXPECT_EQ(stats.probe.rfind(probed ? "signatures stopped after " : "none: ", 0), 0u)
+                << stats.probe;
+        }
         EXPECT_EQ(normalized(r.basis, *ideal.ring),
                   normalized(buchberger(ideal.generators).basis, *ideal.ring));
     }
