@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/certified_isolation.h"
 #include "render/detail/chebyshev_interpolation.h"
 #include "render/ray_restriction.h"
 
@@ -211,6 +212,36 @@ void CertifiedRayFamily::ball_at(const Row& row, double x, BernsteinBall& out) c
             out.b[i] = out.b[i] * u + in_u[i];
         }
     }
+}
+
+bool CertifiedRayFamily::decides_often(int grid, int depth, double fraction) const {
+    if (!certified_ || grid < 1) {
+        return false;
+    }
+    const int samples = grid * grid;
+    const auto needed = static_cast<int>(std::ceil(fraction * samples));
+    Row row;
+    BernsteinBall ball;
+    int decided = 0, undecided = 0;
+    for (int j = 0; j < grid; ++j) {
+        const double y = center_y_ + half_height_ * ((2.0 * j + 1.0) / grid - 1.0);
+        expand_row(y, row);
+        for (int i = 0; i < grid; ++i) {
+            ball_at(row, center_x_ + half_width_ * ((2.0 * i + 1.0) / grid - 1.0), ball);
+            if (isolate_first_root(ball, depth).kind == Isolation::Kind::undecided) {
+                ++undecided;
+            } else {
+                ++decided;
+            }
+            if (decided >= needed) {
+                return true;
+            }
+            if (samples - undecided < needed) {
+                return false;
+            }
+        }
+    }
+    return decided >= needed;
 }
 
 }  // namespace locus::render

@@ -61,6 +61,13 @@ class CertifiedRayFamily {
     // family's rectangle.
     void ball_at(const Row& row, double x, BernsteinBall& out) const;
 
+    // Whether the family's balls decide the first root on the whole range — found, or shown
+    // absent — by subdivision to `depth` for at least `fraction` of a grid × grid sample of the
+    // rectangle's rays (the cells' centres; it stops as soon as the answer is known).
+    // Deterministic: a frame asks once, before any ray, whether its rays should search the
+    // family's balls at all. False when not certified().
+    bool decides_often(int grid, int depth, double fraction) const;
+
   private:
     int degree_ = -1;
     double center_x_, half_width_, center_y_, half_height_;

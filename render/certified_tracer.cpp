@@ -18,8 +18,6 @@ constexpr double kTiny = 0x1.0p-1070;
 // Subdivision depth of one segment's ball before its undecided piece is expanded afresh (the
 // piece is then 64 times narrower than the segment, and its terms no larger than its own).
 constexpr int kSegmentDepth = 6;
-// Depth for a ray family's ball, which cannot be expanded again without tracing the ray alone.
-constexpr int kFamilyDepth = 10;
 // Segments a ray may expand before the exact method decides.
 constexpr int kMaxSegments = 16;
 

@@ -55,6 +55,9 @@ struct NeighbourHint {
     int family_rest = 0;      // rays still to trace alone
 };
 inline constexpr int kFamilyFailuresBeforeRest = 8;
+// Subdivision depth of a ray family's ball, which cannot be expanded again without tracing the
+// ray alone.
+inline constexpr int kFamilyDepth = 10;
 inline constexpr int kFamilyRest = 32;
 
 class CertifiedTracer {

@@ -8,6 +8,10 @@ namespace locus::render {
 
 namespace {
 
+// The family test's sample (kFamilySampleGrid² rays) and the fraction of them it must decide.
+constexpr int kFamilySampleGrid = 8;
+constexpr double kFamilyDecidedEnough = 0.25;
+
 // The image points whose rays can meet the region: the box of the projections of the corners
 // of a box around it (the projection of a convex set in front of the eye is the hull of its
 // corners' projections), widened by two pixels for the roundings, within the image. The whole
@@ -67,7 +71,14 @@ PrimaryTracer::PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera&
         rect_ = footprint(clip, camera, width, height);
         certified_ = std::make_unique<CertifiedRayFamily>(f, *local_camera_, bounds.center,
                                                           bounds.radius, rect_);
-        family_ = certified_->certified() ? Family::certified : Family::none;
+        // A family whose balls decide few rays (degree 30: over the whole frame their radii
+        // are far above F's values near the roots) would cost most rays a fruitless search of
+        // the ball before they are traced alone — a tenth of a Chmutov T30 frame, with the
+        // rows' rests (NeighbourHint). Asked once, of 64 rays, before any is traced: the
+        // choice is the same on every run and thread count.
+        family_ = certified_->decides_often(kFamilySampleGrid, kFamilyDepth, kFamilyDecidedEnough)
+                      ? Family::certified
+                      : Family::none;
         break;
     case TraceMethod::sphere_gradient:
     case TraceMethod::exact:

@@ -24,6 +24,7 @@
 #include "render/certified_isolation.h"
 #include "render/certified_ray_family.h"
 #include "render/certified_tracer.h"
+#include "tests/support/chmutov.h"
 #include "tests/support/exact_ray_oracle.h"
 #include "tests/support/test_data.h"
 
@@ -243,6 +244,30 @@ TEST(BlurredFamily, RestsAndEveryAnswerKeepsTheContract) {
     EXPECT_EQ(decided.status, RootStatus::miss);
     EXPECT_EQ(failing.family_failures, 0);
     EXPECT_EQ(failing.family_rest, 0);
+}
+
+// Whether a frame's rays search the family at all is asked once, of a sample of its rays: at
+// degree 30 over a whole frame the balls decide almost none (a tenth of the frame's time went
+// into such searches); on the suite's surfaces they decide most, and the family is kept.
+TEST(FamilyTest, SampleDecidesWhetherTheFamilyIsSearched) {
+    constexpr int kSize = 64;
+    const auto family_of = [&](const std::string& equation, double radius) {
+        const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+        const Camera camera(
+            {{0.3 * radius, 0.4 * radius, 3.0 * radius}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 35.0},
+            kSize, kSize);
+        return std::make_unique<CertifiedRayFamily>(f, camera, Vec3{0.0, 0.0, 0.0}, radius,
+                                                    ImageRect{0.0, 0.0, kSize, kSize});
+    };
+    const auto t30 = family_of(test::chmutov_equation(30), 1.2);
+    ASSERT_TRUE(t30->certified());
+    EXPECT_FALSE(t30->decides_often(8, kFamilyDepth, 0.25));
+    EXPECT_TRUE(t30->decides_often(8, kFamilyDepth, 0.0));  // nothing asked: true at once
+    for (const char* name : {"torus", "chmutov_octic", "sarti_dodecic"}) {
+        const bench::SuiteSurface surface = suite_surface(name);
+        const auto family = family_of(surface.equation, surface.clip_radius);
+        EXPECT_TRUE(family->decides_often(8, kFamilyDepth, 0.25)) << name;
+    }
 }
 
 // De Casteljau may write a piece over the ball it splits (the isolation's stack relies on it).
