@@ -232,7 +232,25 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
     return exact(ray, {std::nextafter(lower, -INFINITY), std::nextafter(upper, INFINITY)}, work);
 }
 
-RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double tolerance) const {
+RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double tolerance,
+                                      NeighbourHint* hint) const {
+    if (hint == nullptr) {
+        double unused = 0.0;
+        return search(ray, interval, tolerance, NAN, 0.0, unused);
+    }
+    // For the next ray: this one's root, and the half-width of the piece that isolated it (a
+    // root found otherwise — exact arithmetic — leaves that of the finest segment piece).
+    double reach = 0.0;
+    const RootResult result = search(ray, interval, tolerance, hint->t, hint->reach, reach);
+    const bool hit = result.status == RootStatus::hit;
+    hint->t = hit ? result.t : NAN;
+    hint->reach =
+        !hit ? 0.0 : (reach > 0.0 ? reach : std::ldexp(interval.hi - interval.lo, -kSegmentDepth));
+    return result;
+}
+
+RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tolerance,
+                                   double guess, double guess_reach, double& piece_reach) const {
     const double lo = interval.lo, hi = interval.hi;
     if (!(hi > lo)) {
         return miss(0);
@@ -290,7 +308,14 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
             return exact(ray, interval, work);
         }
         const BernsteinBall ball = to_bernstein(power);
-        const Isolation isolation = isolate_first_root(ball, kSegmentDepth);
+        // The first segment is searched near the previous ray's root first: on a row of a
+        // degree-30 frame that skips the bisection down to the first root (a third of the
+        // pieces examined).
+        const bool guided = segments == 1 && std::isfinite(guess) && guess > a && guess < b;
+        const Isolation isolation =
+            guided ? isolate_first_root_near(ball, kSegmentDepth, 0.0, 1.0, (guess - a) / (b - a),
+                                             guess_reach / (b - a))
+                   : isolate_first_root(ball, kSegmentDepth);
         work += isolation.work;
         const double margin = 4.0 * kUnit * std::max(std::abs(a), std::abs(b)) + kTiny;
         const auto t_at = [&](double sigma) { return a + sigma * (b - a); };
@@ -300,6 +325,7 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
         if (isolation.kind == Isolation::Kind::one_root) {
             const Piece piece{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo),
                               t_at(isolation.hi), margin};
+            piece_reach = 0.5 * (piece.t_hi - piece.t_lo);
             return narrow(ray, piece, tolerance, work);
         }
         const double piece_a = std::max(a, t_at(isolation.lo) - margin);

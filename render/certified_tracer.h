@@ -66,7 +66,11 @@ class CertifiedTracer {
     explicit CertifiedTracer(const algebra::CompiledPolynomial& f);
 
     // The first root in (interval.lo, interval.hi] to within `tolerance`·max(1, |t|), or a miss.
-    RootResult first_hit(const Ray& ray, Interval interval, double tolerance) const;
+    // `hint`, when given, is the previous ray of the row's answer: the first segment's search
+    // looks near its root first (isolate_first_root_near), and the hint is updated for the next
+    // ray. A guess only: the answer is certified all the same.
+    RootResult first_hit(const Ray& ray, Interval interval, double tolerance,
+                         NeighbourHint* hint = nullptr) const;
 
     // The same, starting from a ball that a ray family computed for this ray: `ball` is the
     // restriction G(σ) = F(t0 + σ·width), σ ∈ [0, 1], of the exact ray with rigorous radii,
@@ -81,6 +85,10 @@ class CertifiedTracer {
 
   private:
     struct Piece;
+    // first_hit with the guess (t, NaN for none) and its reach for the first segment's search;
+    // `piece_reach` receives the half-width of the piece that isolated a root found by the balls.
+    RootResult search(const Ray& ray, Interval interval, double tolerance, double guess,
+                      double guess_reach, double& piece_reach) const;
     RestrictionBall segment_ball(const Ray& ray, double a, double b) const;
     // The same in double-double (LineRestrictor::restrict_with_double_double_bounds).
     RestrictionBall segment_ball_precise(const Ray& ray, double a, double b) const;

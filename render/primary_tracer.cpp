@@ -125,7 +125,7 @@ RootResult PrimaryTracer::first_hit(Row& row, double image_x, const Ray& ray,
                                       interval, &row.neighbour);
         break;
     case Family::none:
-        hit = tracer_->first_hit(ray, interval);
+        hit = tracer_->first_hit(ray, interval, row.neighbour);
         break;
     }
     row.previous_hit = hit.status == RootStatus::hit ? hit.t : NAN;

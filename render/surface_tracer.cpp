@@ -86,6 +86,14 @@ RootResult SurfaceTracer::first_hit(const Ray& world_ray, Interval interval, dou
     return on_restriction(computed, interval, ray, hint);
 }
 
+RootResult SurfaceTracer::first_hit(const Ray& world_ray, Interval interval,
+                                    NeighbourHint& hint) const {
+    if (method_ != TraceMethod::certified || interval.is_empty()) {
+        return first_hit(world_ray, interval);
+    }
+    return certified_.first_hit(frame_.to_local(world_ray), interval, tolerance_, &hint);
+}
+
 RootResult SurfaceTracer::occluded(const Ray& world_ray, Interval interval) const {
     if (method_ != TraceMethod::certified) {
         return first_hit(world_ray, interval);

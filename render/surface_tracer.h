@@ -54,6 +54,9 @@ class SurfaceTracer {
     // that use one (SturmRootFinder) are faster with it, and the answer is the same.
     RootResult first_hit(const Ray& ray, Interval interval,
                          double hint = std::numeric_limits<double>::quiet_NaN()) const;
+    // The same, for the certified method guided by the previous ray of an image row
+    // (CertifiedTracer::first_hit's hint, which it updates); the other methods ignore it.
+    RootResult first_hit(const Ray& ray, Interval interval, NeighbourHint& hint) const;
     // Whether f has a root in `interval`, for shadow and occlusion rays: the answer of
     // first_hit, except that a hit's t is only known to lie in the closed interval — the
     // certified method stops once a root is isolated, without placing it to the tolerance.

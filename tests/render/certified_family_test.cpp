@@ -80,13 +80,14 @@ TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
         for (int j = 0; j < kSize; ++j) {
             const double y = j + 0.5;
             family.expand_row(y, *row);
-            NeighbourHint neighbour;  // carried along the row, as the renderer does
+            NeighbourHint neighbour,
+                alone_neighbour;  // carried along the row, as the renderer does
             for (int i = 0; i < kSize; ++i) {
                 const double x = i + 0.5;
                 const Ray ray = camera.ray(x, y);
                 const std::optional<Interval> chord = clip_chord(ray, radius, t0, width);
                 if (!chord) {
-                    neighbour = NeighbourHint{};
+                    neighbour = alone_neighbour = NeighbourHint{};
                     continue;
                 }
                 const Interval interval = *chord;
@@ -144,6 +145,22 @@ TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
                     check(tracer.first_hit_from(ball, t0, width, ray, interval, kRenderTolerance,
                                                 &past),
                           "a point past the root");
+                }
+                // The ray traced alone takes the same hints (a frame whose family does not
+                // decide carries the row's hint there).
+                check(tracer.first_hit(ray, interval, kRenderTolerance, &alone_neighbour),
+                      "alone, the neighbour's hint");
+                NeighbourHint alone_random{interval.lo + fraction(random) * span,
+                                           std::pow(10.0, -6.0 * fraction(random)) * span};
+                check(tracer.first_hit(ray, interval, kRenderTolerance, &alone_random),
+                      "alone, a random hint");
+                NeighbourHint alone_start{interval.lo + 2e-6 * span, 1e-6 * span};
+                check(tracer.first_hit(ray, interval, kRenderTolerance, &alone_start),
+                      "alone, a window at the interval's start");
+                if (plain.status == RootStatus::hit) {
+                    NeighbourHint alone_past{plain.t + 0.2 * (interval.hi - plain.t), 0.1 * span};
+                    check(tracer.first_hit(ray, interval, kRenderTolerance, &alone_past),
+                          "alone, a point past the root");
                 }
             }
         }

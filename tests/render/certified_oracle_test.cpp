@@ -441,11 +441,28 @@ TEST(OracleRays, DegreeThirtyRaysAreRightThroughEveryTier) {
         const double lo = (-b - root) / a, hi = (-b + root) / a;
         const RootResult r = tracer.first_hit({to_vec(origin), to_vec(d)}, {lo, hi});
         ASSERT_NE(r.status, RootStatus::unknown) << "ray " << i;
-        EXPECT_TRUE(test::ExactRayOracle::is_right(
-            oracle.restrict(origin, d), lo, hi, r.status == RootStatus::hit, r.t, kTraceTolerance))
+        const test::ExactRayOracle::Restriction exact = oracle.restrict(origin, d);
+        EXPECT_TRUE(test::ExactRayOracle::is_right(exact, lo, hi, r.status == RootStatus::hit, r.t,
+                                                   kTraceTolerance))
             << "ray " << i << ": answered "
             << (r.status == RootStatus::hit ? std::to_string(r.t) : "miss");
         hits += r.status == RootStatus::hit ? 1 : 0;
+        // Guided by a neighbour's answer (as along an image row whose family does not decide):
+        // a hint near the root, and one past it, whose window holds a later root.
+        const CertifiedTracer alone(f);
+        for (const double at : {0.999, 1.05}) {
+            if (r.status != RootStatus::hit) {
+                break;
+            }
+            NeighbourHint hint{lo + at * (r.t - lo), 1e-3 * (hi - lo)};
+            const RootResult guided =
+                alone.first_hit({to_vec(origin), to_vec(d)}, {lo, hi}, kTraceTolerance, &hint);
+            EXPECT_TRUE(test::ExactRayOracle::is_right(
+                exact, lo, hi, guided.status == RootStatus::hit, guided.t, kTraceTolerance))
+                << "ray " << i << " guided to " << at << " of its root: answered "
+                << (guided.status == RootStatus::hit ? std::to_string(guided.t) : "miss");
+            EXPECT_EQ(hint.t, guided.t) << "the hint is the answer, for the next ray";
+        }
     }
     EXPECT_GT(hits, 8);
 }
