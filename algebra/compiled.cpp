@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <tuple>
 
+#include "algebra/assert.h"
 #include "algebra/double_double.h"
 #include "algebra/error.h"
 #include "algebra/exact_line_restriction.h"
@@ -76,7 +78,6 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
         return std::tie(p.term.ex, p.term.ey, p.term.ez) <
                std::tie(q.term.ex, q.term.ey, q.term.ez);
     });
-    std::size_t longest_group = 0;
     for (std::size_t i = 0; i < rounded.size(); ++i) {
         const CompiledTerm& t = rounded[i].term;
         terms_.push_back(t);
@@ -86,16 +87,11 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
                 {t.ex, t.ey, static_cast<double>(t.ex), static_cast<double>(t.ey), i, i});
         }
         groups_.back().end = i + 1;
-        longest_group = std::max(longest_group, groups_.back().end - groups_.back().begin);
         coefficients_.push_back(t.coefficient);
         z_slopes_.push_back(t.coefficient * t.ez);
         z_exponents_.push_back(t.ez);
     }
-    // Roundings any one term meets in enclose_on_line: the point (1 per factor) and the powers
-    // (1 per multiplication), at most 2·degree; c·z^ez, then ·y^ey and ·x^ex; the sum within its
-    // group and the sum of the groups.
-    double_double_depth_ =
-        2 * degree_ + 3 + static_cast<int>(longest_group) + static_cast<int>(groups_.size());
+    plan_line_evaluation();
     // enclose_on_line in doubles errs by at most (γ_N + ρ)·Σ|terms|·(1 + 4(N + degree)u) (see
     // there). Underflow: each of a term's N roundings may lose 2^-1074 when its result is
     // subnormal, and the loss is then multiplied by what is left of the term — at most
@@ -112,6 +108,99 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
     // Kept as the multiplier of 2^-1060, a normal number: arithmetic on subnormals takes a
     // slow path in the processor (it cost the certified renderer 6 %).
     underflow_multiplier_ = (n + 8.0) * std::max(1.0, sum_of_magnitudes * 1.01);
+}
+
+void CompiledPolynomial::plan_line_evaluation() {
+    // Each axis's highest exponent in a term that is not one of its pure powers (the constant
+    // counts as such a term of every axis), and the chains: its pure powers above that.
+    std::array<int, 3> mixed{0, 0, 0};
+    const auto exponents = [](const CompiledTerm& t) {
+        return std::array<int, 3>{t.ex, t.ey, t.ez};
+    };
+    const auto pure_axis = [&](const CompiledTerm& t) {
+        const std::array<int, 3> e = exponents(t);
+        const int nonzero = (e[0] > 0) + (e[1] > 0) + (e[2] > 0);
+        return nonzero != 1 ? -1 : (e[0] > 0 ? 0 : (e[1] > 0 ? 1 : 2));
+    };
+    for (const CompiledTerm& t : terms_) {
+        const std::array<int, 3> e = exponents(t);
+        for (int axis = 0; axis < 3; ++axis) {
+            if (pure_axis(t) != axis) {
+                mixed[axis] = std::max(mixed[axis], e[axis]);
+            }
+        }
+    }
+    const auto in_chain = [&](const CompiledTerm& t) {
+        const int axis = pure_axis(t);
+        return axis >= 0 && exponents(t)[axis] > mixed[axis];
+    };
+    std::array<int, 3> stride{0, 0, 0}, top{0, 0, 0};
+    for (const CompiledTerm& t : terms_) {
+        if (in_chain(t)) {
+            const int axis = pure_axis(t), k = exponents(t)[axis];
+            stride[axis] = std::gcd(stride[axis], k);
+            top[axis] = std::max(top[axis], k);
+        }
+    }
+    int chain_depth = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (top[axis] == 0) {
+            continue;
+        }
+        Chain chain;
+        chain.axis = axis;
+        chain.stride = stride[axis];
+        const auto length = static_cast<std::size_t>(top[axis] / stride[axis]) + 1;
+        chain.high.assign(length, 0.0);
+        chain.low.assign(length, 0.0);
+        chain.magnitude.assign(length, 0.0);
+        for (std::size_t i = 0; i < terms_.size(); ++i) {
+            if (in_chain(terms_[i]) && pure_axis(terms_[i]) == axis) {
+                const auto m = static_cast<std::size_t>(exponents(terms_[i])[axis] / chain.stride);
+                chain.high[m] = terms_[i].coefficient;
+                chain.low[m] = low_words_[i];
+                chain.magnitude[m] = std::abs(terms_[i].coefficient);
+            }
+        }
+        chains_.push_back(std::move(chain));
+        // The term c·x^k, k = stride·m ≤ K = top: x^stride carries 2·stride − 1 roundings (the
+        // point's, once per factor, and its multiplications), and m of those with m Horner
+        // multiplications make 2k; the additions of steps m down to 0, at most K/stride + 1.
+        chain_depth = std::max(chain_depth, 2 * top[axis] + top[axis] / stride[axis] + 1);
+    }
+    // The groups without the chains' terms: a chain's terms end their group (an x or y chain
+    // term is alone in its (ex, ey); a z chain's are the highest powers of the group (0, 0)).
+    std::size_t longest_group = 0;
+    int line_degree = 0;
+    for (const Group& g : groups_) {
+        std::size_t end = g.begin;
+        while (end < g.end && !in_chain(terms_[end])) {
+            ++end;
+        }
+        for (std::size_t i = end; i < g.end; ++i) {
+            LOCUS_ASSERT(in_chain(terms_[i]));
+        }
+        if (end == g.begin) {
+            continue;
+        }
+        line_groups_.push_back({g.ex, g.ey, g.x_exponent, g.y_exponent, g.begin, end});
+        longest_group = std::max(longest_group, end - g.begin);
+        for (std::size_t i = g.begin; i < end; ++i) {
+            const std::array<int, 3> e = exponents(terms_[i]);
+            line_degree = std::max(line_degree, e[0] + e[1] + e[2]);
+            for (int axis = 0; axis < 3; ++axis) {
+                table_degree_[axis] = std::max(table_degree_[axis], e[axis]);
+            }
+        }
+    }
+    // Roundings any one term meets in enclose_on_line. A group's term: the point (1 per
+    // factor) and the powers (1 per multiplication), at most 2·line_degree; c·z^ez, then ·y^ey
+    // and ·x^ex; the sum within its group. A chain's term: chain_depth. Then the sum of the
+    // groups' and the chains' values.
+    const int group_depth =
+        line_groups_.empty() ? 0 : 2 * line_degree + 3 + static_cast<int>(longest_group);
+    double_double_depth_ =
+        std::max(group_depth, chain_depth) + static_cast<int>(line_groups_.size() + chains_.size());
 }
 
 double CompiledPolynomial::with_underflow(double radius, double largest_power) const {
@@ -220,11 +309,13 @@ struct PowerTables {
     using MagnitudeRow = std::array<double, kMaxCompiledDegree + 1>;
     Row xs, ys, zs;
     MagnitudeRow axs, ays, azs;
+    // Powers to degree[axis] on each axis (the three chains side by side while all run).
     void fill(const std::array<Value, 3>& point, const std::array<double, 3>& magnitude,
-              const Value& one, int degree) {
+              const Value& one, const std::array<int, 3>& degree) {
         xs[0] = ys[0] = zs[0] = one;
         axs[0] = ays[0] = azs[0] = 1.0;
-        for (int k = 1; k <= degree; ++k) {
+        const int common = std::min({degree[0], degree[1], degree[2]});
+        for (int k = 1; k <= common; ++k) {
             xs[k] = xs[k - 1] * point[0];
             ys[k] = ys[k - 1] * point[1];
             zs[k] = zs[k - 1] * point[2];
@@ -232,8 +323,70 @@ struct PowerTables {
             ays[k] = ays[k - 1] * magnitude[1];
             azs[k] = azs[k - 1] * magnitude[2];
         }
+        fill_axis(xs, axs, point[0], magnitude[0], common, degree[0]);
+        fill_axis(ys, ays, point[1], magnitude[1], common, degree[1]);
+        fill_axis(zs, azs, point[2], magnitude[2], common, degree[2]);
+    }
+    static void fill_axis(Row& values, MagnitudeRow& magnitudes, const Value& v, double magnitude,
+                          int from, int to) {
+        for (int k = from + 1; k <= to; ++k) {
+            values[k] = values[k - 1] * v;
+            magnitudes[k] = magnitudes[k - 1] * magnitude;
+        }
     }
 };
+
+// The chains' values Σ c_m·X^m, X = v^stride, by Horner's rule, side by side (each step of
+// one waits for the one before: three chains in one loop overlap, where one after the other
+// waited for each in turn), and beside them the same sums of magnitudes (|c_m|·|X|^m in
+// doubles, for the error bound). Returns the sum of the values and adds the magnitudes to
+// `scale`; `coefficient(chain, m)` is c_m of a chain in the evaluation's arithmetic.
+template <typename Value, typename Chains, typename Coefficient>
+Value evaluate_chains(const Chains& chains, const Coefficient& coefficient,
+                      const std::array<Value, 3>& point, const std::array<double, 3>& magnitude,
+                      double& scale) {
+    std::array<Value, 3> power{}, value{};
+    std::array<double, 3> power_magnitude{}, value_magnitude{};
+    std::size_t longest = 0;
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+        power[c] = point[chains[c].axis];
+        power_magnitude[c] = magnitude[chains[c].axis];
+        for (int s = 1; s < chains[c].stride; ++s) {
+            power[c] = power[c] * point[chains[c].axis];
+            power_magnitude[c] *= magnitude[chains[c].axis];
+        }
+        longest = std::max(longest, chains[c].magnitude.size());
+    }
+    for (std::size_t m = longest; m-- > 0;) {
+        for (std::size_t c = 0; c < chains.size(); ++c) {
+            if (m < chains[c].magnitude.size()) {
+                value[c] = value[c] * power[c] + coefficient(chains[c], m);
+                value_magnitude[c] =
+                    value_magnitude[c] * power_magnitude[c] + chains[c].magnitude[m];
+            }
+        }
+    }
+    Value sum{};
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+        sum = sum + value[c];
+        scale += value_magnitude[c];
+    }
+    return sum;
+}
+
+// max(1, |x|, |y|, |z|)^degree (for with_underflow), by squaring: a dozen roundings at most,
+// which the 1% it is given covers.
+double largest_power(const std::array<double, 3>& magnitude, int degree) {
+    const double base = std::max({1.0, magnitude[0], magnitude[1], magnitude[2]});
+    double result = 1.0, square = base;
+    for (int e = degree; e > 0; e >>= 1) {
+        if (e & 1) {
+            result *= square;
+        }
+        square *= square;
+    }
+    return result;
+}
 
 }  // namespace
 
@@ -264,10 +417,10 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
             magnitude[axis] = std::abs(point[axis]);
         }
         PowerTables<double> powers;
-        powers.fill(point, magnitude, 1.0, degree_);
+        powers.fill(point, magnitude, 1.0, table_degree_);
         const auto& [xs, ys, zs, axs, ays, azs] = powers;
         double sum = 0.0, scale = 0.0;
-        for (const Group& g : groups_) {
+        for (const Group& g : line_groups_) {
             double in_z = 0.0, scale_in_z = 0.0;
             for (std::size_t i = g.begin; i < g.end; ++i) {
                 in_z += coefficients_[i] * zs[z_exponents_[i]];
@@ -276,10 +429,13 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
             sum += xs[g.ex] * ys[g.ey] * in_z;
             scale += axs[g.ex] * ays[g.ey] * scale_in_z;
         }
+        sum += evaluate_chains(
+            chains_, [](const Chain& chain, std::size_t m) { return chain.high[m]; }, point,
+            magnitude, scale);
         ValueEnclosure result;
         result.value = sum;
-        result.radius = with_underflow(double_error_per_scale_ * scale,
-                                       std::max({axs[degree_], ays[degree_], azs[degree_]}));
+        result.radius =
+            with_underflow(double_error_per_scale_ * scale, largest_power(magnitude, degree_));
         if (!std::isfinite(sum) || !std::isfinite(result.radius)) {
             result.radius = INFINITY;
         }
@@ -295,11 +451,11 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
         magnitude[axis] = std::abs(point[axis].hi) * (1.0 + 0x1.0p-51);
     }
     PowerTables<DoubleDouble> powers;
-    powers.fill(point, magnitude, from_double(1.0), degree_);
+    powers.fill(point, magnitude, from_double(1.0), table_degree_);
     const auto& [xs, ys, zs, axs, ays, azs] = powers;
     DoubleDouble sum;
     double scale = 0.0;  // Σ |c̃|·|x|^a|y|^b|z|^c, up to the rounding of its own evaluation
-    for (const Group& g : groups_) {
+    for (const Group& g : line_groups_) {
         DoubleDouble in_z;
         double scale_in_z = 0.0;
         for (std::size_t i = g.begin; i < g.end; ++i) {
@@ -309,6 +465,12 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
         sum = sum + xs[g.ex] * ys[g.ey] * in_z;
         scale += axs[g.ex] * ays[g.ey] * scale_in_z;
     }
+    sum = sum + evaluate_chains(
+                    chains_,
+                    [](const Chain& chain, std::size_t m) {
+                        return DoubleDouble{chain.high[m], chain.low[m]};
+                    },
+                    point, magnitude, scale);
     // Each term carries at most N = double_double_depth_ factors (1 + θ) with |θ| ≤
     // kOperationError, so the evaluation errs by at most γ_N·Σ|terms| with
     // γ_N = N·v/(1 − N·v); the coefficients' own rounding adds their relative error times the
@@ -323,7 +485,7 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
     result.value_low = sum.lo;
     result.radius =
         with_underflow((gamma + double_double_coefficient_error_) * bound_of_scale * 1.001,
-                       std::max({axs[degree_], ays[degree_], azs[degree_]}));
+                       largest_power(magnitude, degree_));
     if (!std::isfinite(sum.hi) || !std::isfinite(sum.lo) || !std::isfinite(result.radius)) {
         result.radius = INFINITY;
     }

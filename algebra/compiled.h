@@ -126,10 +126,26 @@ class CompiledPolynomial {
     std::vector<double> low_words_;
     double double_double_coefficient_error_ = 0.0;
     int double_double_depth_ = 0;
+    // enclose_on_line's plan. An axis's pure powers c·x^k that go higher than the axis's
+    // exponent in every other term form a chain, evaluated by Horner's rule in x^stride (stride:
+    // the gcd of its exponents); the other terms are line_groups_ (groups_ without the chains'
+    // terms), with power tables up to table_degree_ on each axis. Why: Chmutov's
+    // T30(x) + T30(y) + T30(z) is three chains of 15 terms and the constant, and needs no
+    // power tables, where the tables of x^k, y^k, z^k in double-double to k = 30 and the group
+    // products were most of a probe of the certified renderer.
+    struct Chain {
+        int axis = 0, stride = 1;
+        std::vector<double> high, low, magnitude;  // of x^(stride·m), m = 0, 1, …
+    };
+    std::vector<Chain> chains_;
+    std::vector<Group> line_groups_;
+    std::array<int, 3> table_degree_{};
     // enclose_on_line's bound in doubles: radius = per_scale·Σ|terms| + the underflow floor,
     // multiplier·2^-1060·max(1, |x|, |y|, |z|)^degree at the point (given the largest of
     // |x|^degree, …), added by with_underflow.
     double with_underflow(double radius, double largest_power) const;
+    // Sets chains_, line_groups_, table_degree_ and double_double_depth_ from terms_ and groups_.
+    void plan_line_evaluation();
     double double_error_per_scale_ = 0.0;
     double underflow_multiplier_ = 0.0;
     double coefficient_error_ = 0.0;

@@ -9,11 +9,14 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "algebra/error.h"
 #include "algebra/parse.h"
+#include "algebra/print.h"
 #include "algebra/real_roots.h"
+#include "tests/support/chmutov.h"
 #include "tests/support/test_data.h"
 
 namespace locus::algebra {
@@ -74,6 +77,70 @@ TEST(CompiledPolynomial, ValueAndGradientAgreeWithExactEvaluation) {
             EXPECT_NEAR(compiled.gradient(p)[axis], partial, 1e-9 * (1.0 + std::abs(partial)));
         }
     }
+}
+
+// enclose_on_line's enclosures hold the exact value of the exact f at the exact point o + t·d,
+// in doubles and in double-double: on random polynomials, and on ones whose pure powers it
+// takes by Horner's rule (chains: Chmutov's T_n, odd and even; pure powers above and below an
+// axis's other exponents; a z chain beside low z powers and the constant).
+TEST(CompiledPolynomial, EnclosuresOnALineHoldTheExactValue) {
+    const RingPtr ring = PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
+    std::vector<std::string> equations = {test::chmutov_equation(6),
+                                          test::chmutov_equation(9),
+                                          test::chmutov_equation(30),
+                                          "x^7-3*x^5*y+2*x^9+y^4-z^3*y+z^11-2*z^4+z+1/3",
+                                          "x^12+x^6*y*z-y^10+y^2+z^2*x-7/5*z^8+z^5-1",
+                                          "x^2+y^2+z^2-1"};
+    std::mt19937_64 rng(2026);
+    for (int i = 0; i < 6; ++i) {
+        equations.push_back(to_string(test::random_polynomial(ring, rng, 9, 6)));
+    }
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(0.05, 1.6);
+    int checked = 0;
+    for (const std::string& equation : equations) {
+        SCOPED_TRACE(equation);
+        const Polynomial parsed = parse_polynomial(equation, ring);
+        if (parsed.is_constant()) {
+            continue;
+        }
+        const CompiledPolynomial compiled = compile_surface(parsed);
+        const Polynomial kept = parse_polynomial(compiled.equation(), ring);
+        for (int trial = 0; trial < 40; ++trial) {
+            const double size = scale(rng);
+            const Point3 origin = {size * unit(rng), size * unit(rng), size * unit(rng)};
+            const Point3 direction = {unit(rng), unit(rng), unit(rng)};
+            const double t = 0.5 * unit(rng);
+            std::array<Rational, 3> point;
+            Rational o, d, at;
+            set_exact_double(at.get(), t);
+            for (std::size_t axis = 0; axis < 3; ++axis) {
+                set_exact_double(o.get(), origin[axis]);
+                set_exact_double(d.get(), direction[axis]);
+                fmpq_mul(point[axis].get(), d.get(), at.get());
+                fmpq_add(point[axis].get(), point[axis].get(), o.get());
+            }
+            const Rational exact = kept.evaluate(point);
+            for (const auto precision : {CompiledPolynomial::Precision::double_precision,
+                                         CompiledPolynomial::Precision::double_double}) {
+                const ValueEnclosure e = compiled.enclose_on_line(origin, direction, t, precision);
+                ASSERT_TRUE(std::isfinite(e.radius));
+                // |exact − (value + value_low)| ≤ radius, in rationals.
+                Rational difference, part;
+                set_exact_double(part.get(), e.value);
+                fmpq_sub(difference.get(), exact.get(), part.get());
+                set_exact_double(part.get(), e.value_low);
+                fmpq_sub(difference.get(), difference.get(), part.get());
+                fmpq_abs(difference.get(), difference.get());
+                set_exact_double(part.get(), e.radius);
+                EXPECT_LE(fmpq_cmp(difference.get(), part.get()), 0)
+                    << "t " << t << ", double-double "
+                    << (precision == CompiledPolynomial::Precision::double_double) << ": value "
+                    << e.value << " radius " << e.radius << ", exact " << fmpq_get_d(exact.get());
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 800);
 }
 
 TEST(ExactFirstRoot, SphereAlongAnAxisIsExact) {
