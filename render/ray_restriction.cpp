@@ -88,12 +88,13 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
         longest_yz = std::max(longest_yz, yz_sum);
         x_sum += x_group.ex + 1;
     }
-    // Horner's rule: per step a sum of products (two roundings on a path) and the step's
-    // coefficient added (one more); then the sum into the result, whose chains gain an
-    // addend per such axis.
+    // The pure powers' Taylor shift: a path goes through at most n multiply-adds (three
+    // roundings each: the product, and the two sums of a radius), then d^j (j products) and
+    // the product a_j·d^j added into the result; the result's chains gain an addend per such
+    // axis.
     int longest_horner = 0;
     for (const Univariate& u : univariate_) {
-        longest_horner = std::max(longest_horner, 3 * u.degree + 1);
+        longest_horner = std::max(longest_horner, 4 * u.degree + 4);
     }
     rounding_depth_ =
         2 * std::max(degree_, 0) + 3 + longest_z + longest_yz + x_sum + 3 + longest_horner;
@@ -350,8 +351,11 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
             }
         }
     }
-    // Pure powers by Horner: h ← h·(o + t·d) + c_k from the top, the constant left to the
-    // groups (c_0 = 0 here).
+    // Pure powers p(x) = Σ c_k·x^k (the constant left to the groups: c_0 = 0 here):
+    // p(o + t·d) = Σ_j a_j·d^j·t^j, where a_j = Σ_k c_k·C(k, j)·o^(k−j) are p's Taylor
+    // coefficients at o, by repeated synthetic division (von zur Gathen and Gerhard's method
+    // A): n(n + 1)/2 multiply-adds, where Horner's rule in the polynomial o + t·d took as many
+    // sums of two products — at degree 30 the restriction's largest cost.
     for (std::size_t axis = 0; axis < 3; ++axis) {
         const Univariate& u = univariate_[axis];
         if (u.degree == 0) {
@@ -359,21 +363,29 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
         }
         const Scalar& o = origin[axis];
         const Scalar& d = direction[axis];
-        std::array<Scalar, kMaxDegree + 1> h;
-        h[0] = coefficient(u.by_exponent[static_cast<std::size_t>(u.degree)]);
-        for (int k = u.degree - 1, top = 0; k >= 0; --k, ++top) {
-            h[top + 1] = h[top] * d;
-            for (int j = top; j >= 1; --j) {
-                h[j] = Scalar::sum_of_products(h[j], o, h[j - 1], d);
-            }
-            h[0] = h[0] * o;
+        const int n = u.degree;
+        std::array<Scalar, kMaxDegree + 1> a;
+        a[0] = Scalar::zero();
+        for (int k = 1; k <= n; ++k) {
             const ZTerm& term = u.by_exponent[static_cast<std::size_t>(k)];
-            if (k > 0 && term.ez >= 0) {
-                Scalar::multiply_add(h[0], coefficient(term), Scalar::one());
+            a[static_cast<std::size_t>(k)] = term.ez >= 0 ? coefficient(term) : Scalar::zero();
+        }
+        // Pass j sets a_k += o·a_(k+1) for k from n − 1 down to j: each step waits for the one
+        // before it, so the passes run as a wavefront, the steps (j, k) of one diagonal
+        // s = j + n − 1 − k together (each needs only steps of diagonal s − 1): one pass after
+        // another was slower than Horner's rule, whose steps are independent.
+        for (int diagonal = 0; diagonal < n; ++diagonal) {
+            for (int j = 0; j <= diagonal; ++j) {
+                const int k = n - 1 - diagonal + j;
+                Scalar::multiply_add(a[static_cast<std::size_t>(k)], o,
+                                     a[static_cast<std::size_t>(k) + 1]);
             }
         }
-        for (int j = 0; j <= u.degree; ++j) {
-            Scalar::multiply_add(result[j], h[j], Scalar::one());
+        Scalar power = Scalar::one();  // d^j
+        for (int j = 0; j <= n; ++j) {
+            Scalar::multiply_add(result[static_cast<std::size_t>(j)],
+                                 a[static_cast<std::size_t>(j)], power);
+            power = power * d;
         }
     }
 }

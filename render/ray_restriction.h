@@ -104,11 +104,11 @@ class LineRestrictor {
     };
     std::vector<XGroup> x_groups_;
     // An axis whose pure powers (c·x^k, k ≥ 1) go higher than its exponents in every other
-    // term takes them by Horner's rule in (o + t·d) — about n²/2 operations for degree n —
-    // instead of through its power table and the term loops, and its table stops at the
-    // other terms' exponents. For Chmutov's T_n(x) + T_n(y) + T_n(z) that is every term but
-    // the constant, and no power tables at all: at degree 30 the restriction's operations
-    // fall from about 2 300 to 1 500. by_exponent[k].ez is k for a term present, −1 else.
+    // term takes them by a Taylor shift to o, scaled by d^j (about n²/2 multiply-adds for
+    // degree n), instead of through its power table and the term loops, and its table stops at
+    // the other terms' exponents. For Chmutov's T_n(x) + T_n(y) + T_n(z) that is every term but
+    // the constant, and no power tables at all. by_exponent[k].ez is k for a term present, −1
+    // else.
     struct Univariate {
         int degree = 0;  // 0: the axis uses its power table for everything
         std::vector<ZTerm> by_exponent;
