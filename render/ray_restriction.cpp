@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <type_traits>
 
 #include "algebra/double_double.h"
 
@@ -173,6 +174,51 @@ struct DoubleDoubleBall {
         return z;
     }
 };
+
+// The Taylor shift's diagonals (LineRestrictor::expand) for balls, as Ball::multiply_add does
+// each step, on separate arrays of values and radii so that the steps of a diagonal become
+// vector operations.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void shift_balls(std::array<std::array<Ball, kMaxDegree + 1>, 3>& a, const std::array<Ball, 3>& o,
+                 const std::array<int, 3>& n) {
+    std::array<std::array<double, kMaxDegree + 2>, 3> v{}, r{};
+    std::array<double, 3> value{}, magnitude{}, radius{};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k <= n[axis]; ++k) {
+            v[axis][static_cast<std::size_t>(k)] = a[axis][static_cast<std::size_t>(k)].v;
+            r[axis][static_cast<std::size_t>(k)] = a[axis][static_cast<std::size_t>(k)].r;
+        }
+        value[axis] = o[axis].v;
+        magnitude[axis] = std::abs(o[axis].v);
+        radius[axis] = o[axis].r;
+    }
+    const int longest = std::max({n[0], n[1], n[2]});
+    for (int diagonal = 0; diagonal < longest; ++diagonal) {
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            double* values = v[axis].data();
+            double* radii = r[axis].data();
+            const double ov = value[axis], om = magnitude[axis], orad = radius[axis];
+            // An axis of lower degree has had all its n diagonals.
+            for (int k = n[axis] - 1 - diagonal; k >= 0 && k < n[axis]; ++k) {
+                const auto i = static_cast<std::size_t>(k);
+                const double bv = values[i + 1], br = radii[i + 1];
+                const double p = ov * bv;
+                const double sum = values[i] + p;
+                radii[i] +=
+                    om * br + (std::abs(bv) + br) * orad + kUnit * (std::abs(p) + std::abs(sum));
+                values[i] = sum;
+            }
+        }
+    }
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k <= n[axis]; ++k) {
+            a[axis][static_cast<std::size_t>(k)] = {v[axis][static_cast<std::size_t>(k)],
+                                                    r[axis][static_cast<std::size_t>(k)]};
+        }
+    }
+}
 
 // The restriction as balls: value(k) ± radius(k, inflate), where inflate = 1 + 2γ_N covers the
 // rounding of radii reached by at most N = depth roundings (sums of products of positive
@@ -356,36 +402,52 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
     // coefficients at o, by repeated synthetic division (von zur Gathen and Gerhard's method
     // A): n(n + 1)/2 multiply-adds, where Horner's rule in the polynomial o + t·d took as many
     // sums of two products — at degree 30 the restriction's largest cost.
+    // The three axes' shifts run side by side (diagonals outer): a diagonal waits for the one
+    // before it, and another axis' diagonal fills that wait.
+    std::array<std::array<Scalar, kMaxDegree + 1>, 3> a;
+    std::array<int, 3> n{};
     for (std::size_t axis = 0; axis < 3; ++axis) {
         const Univariate& u = univariate_[axis];
-        if (u.degree == 0) {
-            continue;
-        }
-        const Scalar& o = origin[axis];
-        const Scalar& d = direction[axis];
-        const int n = u.degree;
-        std::array<Scalar, kMaxDegree + 1> a;
-        a[0] = Scalar::zero();
-        for (int k = 1; k <= n; ++k) {
+        n[axis] = u.degree;
+        a[axis][0] = Scalar::zero();
+        for (int k = 1; k <= u.degree; ++k) {
             const ZTerm& term = u.by_exponent[static_cast<std::size_t>(k)];
-            a[static_cast<std::size_t>(k)] = term.ez >= 0 ? coefficient(term) : Scalar::zero();
+            a[axis][static_cast<std::size_t>(k)] =
+                term.ez >= 0 ? coefficient(term) : Scalar::zero();
         }
-        // Pass j sets a_k += o·a_(k+1) for k from n − 1 down to j: each step waits for the one
-        // before it, so the passes run as a wavefront, the steps (j, k) of one diagonal
-        // s = j + n − 1 − k together (each needs only steps of diagonal s − 1): one pass after
-        // another was slower than Horner's rule, whose steps are independent.
-        for (int diagonal = 0; diagonal < n; ++diagonal) {
-            for (int j = 0; j <= diagonal; ++j) {
-                const int k = n - 1 - diagonal + j;
-                Scalar::multiply_add(a[static_cast<std::size_t>(k)], o,
-                                     a[static_cast<std::size_t>(k) + 1]);
+    }
+    if (n[0] + n[1] + n[2] == 0) {
+        return;
+    }
+    // Pass j sets a_k += o·a_(k+1) for k from n − 1 down to j: each step waits for the one
+    // before it, so the passes run as a wavefront, the steps (j, k) of one diagonal
+    // s = j + n − 1 − k together (each needs only steps of diagonal s − 1): one pass after
+    // another was slower than Horner's rule, whose steps are independent. A diagonal is
+    // k = n − 1 − s … n − 1 in ascending order, each step reading a_(k+1) before the next step
+    // writes it: for balls, a loop the compiler turns into vector operations.
+    if constexpr (std::is_same_v<Scalar, Ball>) {
+        shift_balls(a, origin, n);
+    } else {
+        const int longest = std::max({n[0], n[1], n[2]});
+        for (int diagonal = 0; diagonal < longest; ++diagonal) {
+            for (std::size_t axis = 0; axis < 3; ++axis) {
+                // An axis of lower degree has had all its n diagonals.
+                for (int k = n[axis] - 1 - diagonal; k >= 0 && k < n[axis]; ++k) {
+                    Scalar::multiply_add(a[axis][static_cast<std::size_t>(k)], origin[axis],
+                                         a[axis][static_cast<std::size_t>(k) + 1]);
+                }
             }
         }
+    }
+    for (std::size_t axis = 0; axis < 3; ++axis) {
         Scalar power = Scalar::one();  // d^j
-        for (int j = 0; j <= n; ++j) {
+        for (int j = 0; j <= n[axis]; ++j) {
+            if (n[axis] == 0) {
+                break;
+            }
             Scalar::multiply_add(result[static_cast<std::size_t>(j)],
-                                 a[static_cast<std::size_t>(j)], power);
-            power = power * d;
+                                 a[axis][static_cast<std::size_t>(j)], power);
+            power = power * direction[axis];
         }
     }
 }
