@@ -341,8 +341,11 @@ struct PowerTables {
 // waited for each in turn), and beside them the same sums of magnitudes (|c_m|·|X|^m in
 // doubles, for the error bound). Returns the sum of the values and adds the magnitudes to
 // `scale`; `coefficient(chain, m)` is c_m of a chain in the evaluation's arithmetic.
+// Always inlined: enclose_on_line is compiled twice (with FMA and without, below), and a
+// separate function would be compiled once, without, each fused multiply-add of the
+// double-double products a call into libm.
 template <typename Value, typename Chains, typename Coefficient>
-Value evaluate_chains(const Chains& chains, const Coefficient& coefficient,
+[[gnu::always_inline]] inline Value evaluate_chains(const Chains& chains, const Coefficient& coefficient,
                       const std::array<Value, 3>& point, const std::array<double, 3>& magnitude,
                       double& scale) {
     std::array<Value, 3> power{}, value{};
