@@ -25,7 +25,68 @@ Vec3 direction_rounding(const Camera& camera, double x, double y) {
             std::abs(y) * glm::abs(camera.per_row()));
 }
 
+// The reference ray of image point (x, y) is e + (D + s·R)·d(x, y) with the exact
+// d = base + x·U + y·V; as a line in s ∈ [−1, 1] its origin is e + D·d and its direction R·d.
+// Its restriction in the Bernstein basis, with rigorous radii for the direction's rounding
+// and `node_error` more on each of d's components.
+BernsteinBall line_ball(const LineRestrictor& restrictor, const algebra::CompiledPolynomial& f,
+                        const Camera& camera, double plane_t, double radius, double image_x,
+                        double image_y, const Vec3& node_error) {
+    const Vec3 d = camera.direction(image_x, image_y);
+    const Vec3 d_error = direction_rounding(camera, image_x, image_y) + node_error;
+    const Vec3& eye = camera.eye();
+    Vec3 origin, direction;
+    LineError error;
+    for (int i = 0; i < 3; ++i) {
+        origin[i] = std::fma(plane_t, d[i], eye[i]);
+        direction[i] = radius * d[i];
+        error.origin[i] = 1.01 * kUnit * std::abs(origin[i]) + std::abs(plane_t) * d_error[i];
+        error.direction[i] = 1.01 * kUnit * std::abs(direction[i]) + radius * d_error[i];
+    }
+    return to_bernstein(
+        restrictor.restrict_with_bounds(origin, direction, error, f.coefficient_error()));
+}
+
 }  // namespace
+
+bool CertifiedRayFamily::worth_building(const algebra::CompiledPolynomial& f, const Camera& camera,
+                                        const Vec3& center, double radius, const ImageRect& rect,
+                                        int grid, int depth, double fraction) {
+    if (grid < 1 || f.degree() < 0 || f.degree() > kMaxDegree || !(radius > 0.0)) {
+        return false;
+    }
+    const LineRestrictor restrictor(f.terms());
+    const double plane_t = glm::dot(center - camera.eye(), camera.forward());
+    // A family's radius for coefficient i is at least Λ² (the tensor Lebesgue constant) times
+    // the largest node's, for every pixel: the samples are searched with that radius.
+    const double lebesgue = detail::ChebyshevInterpolation(f.degree()).lebesgue_bound();
+    std::vector<BernsteinBall> balls;
+    std::array<double, kMaxDegree + 1> largest{};
+    for (int j = 0; j < grid; ++j) {
+        for (int i = 0; i < grid; ++i) {
+            const double x = rect.x0 + (rect.x1 - rect.x0) * (i + 0.5) / grid;
+            const double y = rect.y0 + (rect.y1 - rect.y0) * (j + 0.5) / grid;
+            balls.push_back(line_ball(restrictor, f, camera, plane_t, radius, x, y, Vec3(0.0)));
+            for (int k = 0; k <= f.degree(); ++k) {
+                largest[k] = std::max(largest[k], balls.back().r[k]);
+            }
+        }
+    }
+    // Rays whose ball is of one sign throughout (far from the surface) are decided by any ball
+    // and say nothing: the fraction is of the others. A sample of only those: build.
+    int decided = 0, searched = 0;
+    for (BernsteinBall& ball : balls) {
+        for (int k = 0; k <= f.degree(); ++k) {
+            ball.r[k] = lebesgue * lebesgue * largest[k];
+        }
+        if (most_sign_changes(ball) == 0) {
+            continue;
+        }
+        ++searched;
+        decided += isolate_first_root(ball, depth).kind != Isolation::Kind::undecided ? 1 : 0;
+    }
+    return searched == 0 || decided >= fraction * searched;
+}
 
 CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, const Camera& camera,
                                        const Vec3& center, double radius, const ImageRect& rect)
@@ -47,22 +108,8 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
     const double plane_t = glm::dot(center - eye, camera.forward());
     t_start_ = plane_t - radius;
     t_width_ = 2.0 * radius;
-    // The reference ray of image point (cx + hw·u, cy + hh·v) is e + (D + x·R)·d(u, v) with the
-    // exact d = base + (cx + hw·u)·U + (cy + hh·v)·V; as a line in x ∈ [−1, 1] its origin is
-    // e + D·d and its direction R·d.
-    auto line_ball = [&](double image_x, double image_y, const Vec3& node_error) {
-        const Vec3 d = camera.direction(image_x, image_y);
-        const Vec3 d_error = direction_rounding(camera, image_x, image_y) + node_error;
-        Vec3 origin, direction;
-        LineError error;
-        for (int i = 0; i < 3; ++i) {
-            origin[i] = std::fma(plane_t, d[i], eye[i]);
-            direction[i] = radius * d[i];
-            error.origin[i] = 1.01 * kUnit * std::abs(origin[i]) + std::abs(plane_t) * d_error[i];
-            error.direction[i] = 1.01 * kUnit * std::abs(direction[i]) + radius * d_error[i];
-        }
-        return to_bernstein(
-            restrictor.restrict_with_bounds(origin, direction, error, f.coefficient_error()));
+    const auto node_ball = [&](double image_x, double image_y, const Vec3& node_error) {
+        return line_ball(restrictor, f, camera, plane_t, radius, image_x, image_y, node_error);
     };
 
     // The nodes' balls: node (j, k) at u_j, v_k, whose image coordinates are themselves
@@ -74,7 +121,7 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
     for (std::size_t j = 0; j < nodes; ++j) {
         for (std::size_t k = 0; k < nodes; ++k) {
             BernsteinBall& ball = balls[j * nodes + k];
-            ball = line_ball(center_x_ + chebyshev.node(static_cast<int>(j)) * half_width_,
+            ball = node_ball(center_x_ + chebyshev.node(static_cast<int>(j)) * half_width_,
                              center_y_ + chebyshev.node(static_cast<int>(k)) * half_height_,
                              node_error);
             for (int i = 0; i <= n; ++i) {

@@ -8,7 +8,9 @@ namespace locus::render {
 
 namespace {
 
-// The family test's sample (kFamilySampleGrid² rays) and the fraction of them it must decide.
+// The family tests' samples (kNodeSampleGrid² rays' exact balls, kFamilySampleGrid² of the
+// family's) and the fraction of them they must decide.
+constexpr int kNodeSampleGrid = 4;
 constexpr int kFamilySampleGrid = 8;
 constexpr double kFamilyDecidedEnough = 0.25;
 
@@ -69,16 +71,23 @@ PrimaryTracer::PrimaryTracer(const algebra::CompiledPolynomial& f, const Camera&
     case TraceMethod::certified:
         // In the world's coordinates: the frame's camera has the same image coordinates.
         rect_ = footprint(clip, camera, width, height);
-        certified_ = std::make_unique<CertifiedRayFamily>(f, *local_camera_, bounds.center,
-                                                          bounds.radius, rect_);
         // A family whose balls decide few rays (degree 30: over the whole frame their radii
         // are far above F's values near the roots) would cost most rays a fruitless search of
         // the ball before they are traced alone — a tenth of a Chmutov T30 frame, with the
-        // rows' rests (NeighbourHint). Asked once, of 64 rays, before any is traced: the
-        // choice is the same on every run and thread count.
-        family_ = certified_->decides_often(kFamilySampleGrid, kFamilyDepth, kFamilyDecidedEnough)
-                      ? Family::certified
-                      : Family::none;
+        // rows' rests (NeighbourHint). Asked once, before any ray is traced, of 16 rays'
+        // exact balls (where those do not decide, the family's wider balls would not: it is
+        // not built, which at degree 30 cost 961 of them) and then of 64 of the family's:
+        // the choice is the same on every run and thread count.
+        family_ = Family::none;
+        if (CertifiedRayFamily::worth_building(f, *local_camera_, bounds.center, bounds.radius,
+                                               rect_, kNodeSampleGrid, kFamilyDepth,
+                                               kFamilyDecidedEnough)) {
+            certified_ = std::make_unique<CertifiedRayFamily>(f, *local_camera_, bounds.center,
+                                                              bounds.radius, rect_);
+            if (certified_->decides_often(kFamilySampleGrid, kFamilyDepth, kFamilyDecidedEnough)) {
+                family_ = Family::certified;
+            }
+        }
         break;
     case TraceMethod::sphere_gradient:
     case TraceMethod::exact:

@@ -276,14 +276,26 @@ TEST(FamilyTest, SampleDecidesWhetherTheFamilyIsSearched) {
         return std::make_unique<CertifiedRayFamily>(f, camera, Vec3{0.0, 0.0, 0.0}, radius,
                                                     ImageRect{0.0, 0.0, kSize, kSize});
     };
+    const auto worth_building = [&](const std::string& equation, double radius) {
+        const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+        const Camera camera(
+            {{0.3 * radius, 0.4 * radius, 3.0 * radius}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 35.0},
+            kSize, kSize);
+        return CertifiedRayFamily::worth_building(f, camera, Vec3{0.0, 0.0, 0.0}, radius,
+                                                  ImageRect{0.0, 0.0, kSize, kSize}, 4,
+                                                  kFamilyDepth, 0.25);
+    };
     const auto t30 = family_of(test::chmutov_equation(30), 1.2);
     ASSERT_TRUE(t30->certified());
     EXPECT_FALSE(t30->decides_often(8, kFamilyDepth, 0.25));
     EXPECT_TRUE(t30->decides_often(8, kFamilyDepth, 0.0));  // nothing asked: true at once
+    // And the family is not even built: 16 rays' balls predict it.
+    EXPECT_FALSE(worth_building(test::chmutov_equation(30), 1.2));
     for (const char* name : {"torus", "chmutov_octic", "sarti_dodecic"}) {
         const bench::SuiteSurface surface = suite_surface(name);
         const auto family = family_of(surface.equation, surface.clip_radius);
         EXPECT_TRUE(family->decides_often(8, kFamilyDepth, 0.25)) << name;
+        EXPECT_TRUE(worth_building(surface.equation, surface.clip_radius)) << name;
     }
 }
 
