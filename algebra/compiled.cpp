@@ -162,6 +162,9 @@ void CompiledPolynomial::plan_line_evaluation() {
                 chain.magnitude[m] = std::abs(terms_[i].coefficient);
             }
         }
+        for (const double low : chain.low) {
+            chains_exact_in_doubles_ = chains_exact_in_doubles_ && low == 0.0;
+        }
         chains_.push_back(std::move(chain));
         // The term c·x^k, k = stride·m ≤ K = top: x^stride carries 2·stride − 1 roundings (the
         // point's, once per factor, and its multiplications), and m of those with m Horner
@@ -345,9 +348,11 @@ struct PowerTables {
 // separate function would be compiled once, without, each fused multiply-add of the
 // double-double products a call into libm.
 template <typename Value, typename Chains, typename Coefficient>
-[[gnu::always_inline]] inline Value evaluate_chains(const Chains& chains, const Coefficient& coefficient,
-                      const std::array<Value, 3>& point, const std::array<double, 3>& magnitude,
-                      double& scale) {
+[[gnu::always_inline]] inline Value evaluate_chains(const Chains& chains,
+                                                    const Coefficient& coefficient,
+                                                    const std::array<Value, 3>& point,
+                                                    const std::array<double, 3>& magnitude,
+                                                    double& scale) {
     std::array<Value, 3> power{}, value{};
     std::array<double, 3> power_magnitude{}, value_magnitude{};
     std::size_t longest = 0;
@@ -468,12 +473,18 @@ CompiledPolynomial::enclose_on_line(const Point3& origin, const Point3& directio
         sum = sum + xs[g.ex] * ys[g.ey] * in_z;
         scale += axs[g.ex] * ays[g.ey] * scale_in_z;
     }
-    sum = sum + evaluate_chains(
-                    chains_,
-                    [](const Chain& chain, std::size_t m) {
-                        return DoubleDouble{chain.high[m], chain.low[m]};
-                    },
-                    point, magnitude, scale);
+    // Coefficients that are doubles (integers, Chmutov's) are added as doubles: the cheaper
+    // sum of a double-double and a double, within the same kOperationError.
+    sum = sum + (chains_exact_in_doubles_
+                     ? evaluate_chains(
+                           chains_, [](const Chain& chain, std::size_t m) { return chain.high[m]; },
+                           point, magnitude, scale)
+                     : evaluate_chains(
+                           chains_,
+                           [](const Chain& chain, std::size_t m) {
+                               return DoubleDouble{chain.high[m], chain.low[m]};
+                           },
+                           point, magnitude, scale));
     // Each term carries at most N = double_double_depth_ factors (1 + θ) with |θ| ≤
     // kOperationError, so the evaluation errs by at most γ_N·Σ|terms| with
     // γ_N = N·v/(1 − N·v); the coefficients' own rounding adds their relative error times the

@@ -138,6 +138,7 @@ class CompiledPolynomial {
         std::vector<double> high, low, magnitude;  // of x^(stride·m), m = 0, 1, …
     };
     std::vector<Chain> chains_;
+    bool chains_exact_in_doubles_ = true;  // every chain coefficient's low word is 0
     std::vector<Group> line_groups_;
     std::array<int, 3> table_degree_{};
     // enclose_on_line's bound in doubles: radius = per_scale·Σ|terms| + the underflow floor,
