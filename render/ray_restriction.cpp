@@ -181,15 +181,11 @@ struct DoubleDoubleBall {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-void shift_balls(std::array<std::array<Ball, kMaxDegree + 1>, 3>& a, const std::array<Ball, 3>& o,
+void shift_balls(std::array<std::array<double, kMaxDegree + 2>, 3>& v,
+                 std::array<std::array<double, kMaxDegree + 2>, 3>& r, const std::array<Ball, 3>& o,
                  const std::array<int, 3>& n) {
-    std::array<std::array<double, kMaxDegree + 2>, 3> v{}, r{};
     std::array<double, 3> value{}, magnitude{}, radius{};
     for (std::size_t axis = 0; axis < 3; ++axis) {
-        for (int k = 0; k <= n[axis]; ++k) {
-            v[axis][static_cast<std::size_t>(k)] = a[axis][static_cast<std::size_t>(k)].v;
-            r[axis][static_cast<std::size_t>(k)] = a[axis][static_cast<std::size_t>(k)].r;
-        }
         value[axis] = o[axis].v;
         magnitude[axis] = std::abs(o[axis].v);
         radius[axis] = o[axis].r;
@@ -210,12 +206,6 @@ void shift_balls(std::array<std::array<Ball, kMaxDegree + 1>, 3>& a, const std::
                     om * br + (std::abs(bv) + br) * orad + kUnit * (std::abs(p) + std::abs(sum));
                 values[i] = sum;
             }
-        }
-    }
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        for (int k = 0; k <= n[axis]; ++k) {
-            a[axis][static_cast<std::size_t>(k)] = {v[axis][static_cast<std::size_t>(k)],
-                                                    r[axis][static_cast<std::size_t>(k)]};
         }
     }
 }
@@ -404,30 +394,49 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
     // sums of two products — at degree 30 the restriction's largest cost.
     // The three axes' shifts run side by side (diagonals outer): a diagonal waits for the one
     // before it, and another axis' diagonal fills that wait.
-    std::array<std::array<Scalar, kMaxDegree + 1>, 3> a;
     std::array<int, 3> n{};
     for (std::size_t axis = 0; axis < 3; ++axis) {
-        const Univariate& u = univariate_[axis];
-        n[axis] = u.degree;
-        a[axis][0] = Scalar::zero();
-        for (int k = 1; k <= u.degree; ++k) {
-            const ZTerm& term = u.by_exponent[static_cast<std::size_t>(k)];
-            a[axis][static_cast<std::size_t>(k)] =
-                term.ez >= 0 ? coefficient(term) : Scalar::zero();
-        }
+        n[axis] = univariate_[axis].degree;
     }
     if (n[0] + n[1] + n[2] == 0) {
         return;
     }
+    const auto coefficient_of = [&](std::size_t axis, int k) {
+        const ZTerm& term = univariate_[axis].by_exponent[static_cast<std::size_t>(k)];
+        return k > 0 && term.ez >= 0 ? coefficient(term) : Scalar::zero();
+    };
     // Pass j sets a_k += o·a_(k+1) for k from n − 1 down to j: each step waits for the one
     // before it, so the passes run as a wavefront, the steps (j, k) of one diagonal
     // s = j + n − 1 − k together (each needs only steps of diagonal s − 1): one pass after
     // another was slower than Horner's rule, whose steps are independent. A diagonal is
     // k = n − 1 − s … n − 1 in ascending order, each step reading a_(k+1) before the next step
-    // writes it: for balls, a loop the compiler turns into vector operations.
+    // writes it: for balls (on separate arrays of values and radii), a loop the compiler turns
+    // into vector operations. Then a_j·d^j is added into the result.
     if constexpr (std::is_same_v<Scalar, Ball>) {
-        shift_balls(a, origin, n);
+        std::array<std::array<double, kMaxDegree + 2>, 3> values{}, radii{};
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            for (int k = 0; k <= n[axis]; ++k) {
+                const Ball c = coefficient_of(axis, k);
+                values[axis][static_cast<std::size_t>(k)] = c.v;
+                radii[axis][static_cast<std::size_t>(k)] = c.r;
+            }
+        }
+        shift_balls(values, radii, origin, n);
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            Ball power = Ball::one();  // d^j
+            for (int j = 0; j <= n[axis] && n[axis] > 0; ++j) {
+                const auto jj = static_cast<std::size_t>(j);
+                Ball::multiply_add(result[jj], Ball{values[axis][jj], radii[axis][jj]}, power);
+                power = power * direction[axis];
+            }
+        }
     } else {
+        std::array<std::array<Scalar, kMaxDegree + 1>, 3> a;
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            for (int k = 0; k <= n[axis]; ++k) {
+                a[axis][static_cast<std::size_t>(k)] = coefficient_of(axis, k);
+            }
+        }
         const int longest = std::max({n[0], n[1], n[2]});
         for (int diagonal = 0; diagonal < longest; ++diagonal) {
             for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -438,16 +447,13 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
                 }
             }
         }
-    }
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        Scalar power = Scalar::one();  // d^j
-        for (int j = 0; j <= n[axis]; ++j) {
-            if (n[axis] == 0) {
-                break;
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            Scalar power = Scalar::one();  // d^j
+            for (int j = 0; j <= n[axis] && n[axis] > 0; ++j) {
+                Scalar::multiply_add(result[static_cast<std::size_t>(j)],
+                                     a[axis][static_cast<std::size_t>(j)], power);
+                power = power * direction[axis];
             }
-            Scalar::multiply_add(result[static_cast<std::size_t>(j)],
-                                 a[axis][static_cast<std::size_t>(j)], power);
-            power = power * direction[axis];
         }
     }
 }
