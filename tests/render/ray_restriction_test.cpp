@@ -59,7 +59,7 @@ std::string random_equation(std::mt19937_64& rng, int degree) {
 // at the point itself, which cancellation can make far smaller, was too tight a scale: seed
 // 469 of LOCUS_TEST_MULTIPLIER=20 failed by 1.5 times, before and after the Taylor shift.)
 void expect_restriction_matches(const algebra::CompiledPolynomial& f, const RayPolynomial& F,
-                                const Vec3& o, const Vec3& d) {
+                                const Vec3& o, const Vec3& d, double relative = 1e-11) {
     for (double t : {-1.0, -0.3, 0.0, 0.4, 1.0, 2.5}) {
         const Vec3 p = o + t * d;
         const Vec3 reach = glm::abs(o) + std::abs(t) * glm::abs(d);
@@ -68,7 +68,7 @@ void expect_restriction_matches(const algebra::CompiledPolynomial& f, const RayP
             magnitude += std::abs(term.coefficient) * std::pow(reach.x, term.ex) *
                          std::pow(reach.y, term.ey) * std::pow(reach.z, term.ez);
         }
-        EXPECT_NEAR(F(t), f.value(to_point(p)), 1e-11 * (1.0 + magnitude)) << "t = " << t;
+        EXPECT_NEAR(F(t), f.value(to_point(p)), relative * (1.0 + magnitude)) << "t = " << t;
     }
 }
 
@@ -277,8 +277,11 @@ TEST(RayFamily, MatchesTheGeneralRestrictionOfEachPrimaryRay) {
                 const Ray ray = camera.ray(x, y);
                 const RayPolynomial from_family = RayFamily::restriction(row, x);
                 ASSERT_EQ(from_family.degree, restrictor.degree());
-                expect_restriction_matches(f, from_family, ray.at(family.origin_t()),
-                                           ray.direction);
+                // The family interpolates through n + 1 rays (and evaluates the interpolant in
+                // powers of x): ten times the direct restriction's allowance (seed 35 of
+                // LOCUS_TEST_MULTIPLIER=5 needed 1.3 times the direct one).
+                expect_restriction_matches(f, from_family, ray.at(family.origin_t()), ray.direction,
+                                           1e-10);
             }
         }
     }
