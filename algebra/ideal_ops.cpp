@@ -232,11 +232,17 @@ std::vector<Polynomial> eliminate(Generators generators, std::span<const std::si
 std::vector<Polynomial> ideal_sum(Generators i, Generators j, const GroebnerOptions& options) {
     std::vector<Polynomial> all(i.begin(), i.end());
     all.insert(all.end(), j.begin(), j.end());
+    if (all.empty()) {
+        return {};  // 0 + 0
+    }
     ring_of(all, "sum");
     return basis_of(all, options);
 }
 
 std::vector<Polynomial> ideal_product(Generators i, Generators j, const GroebnerOptions& options) {
+    if (i.empty() || j.empty()) {
+        return {};  // I·0 = 0
+    }
     ring_of(i, "product");
     ring_of(j, "product");
     std::vector<Polynomial> all;
@@ -250,6 +256,9 @@ std::vector<Polynomial> ideal_product(Generators i, Generators j, const Groebner
 
 std::vector<Polynomial> ideal_intersection(Generators i, Generators j,
                                            const GroebnerOptions& options) {
+    if (i.empty() || j.empty()) {
+        return {};  // I ∩ 0 = 0
+    }
     const RingPtr& ring = ring_of(i, "intersection");
     ring_of(j, "intersection");
     const RingPtr big = ring_with_extra_variable(ring, "t");
@@ -327,6 +336,14 @@ bool radical_membership(const Polynomial& f, Generators generators,
 }
 
 bool ideal_contains(Generators i, Generators j, const GroebnerOptions& options) {
+    if (i.empty()) {
+        // J ⊆ 0: every generator of J is zero (and 0 ⊆ 0).
+        return std::all_of(j.begin(), j.end(), [](const Polynomial& g) { return g.is_zero(); });
+    }
+    if (j.empty()) {
+        ring_of(i, "containment");
+        return true;  // 0 ⊆ I
+    }
     ring_of(i, "containment");
     const std::vector<Polynomial> basis = basis_of(i, options);
     return std::all_of(j.begin(), j.end(),

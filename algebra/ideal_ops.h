@@ -10,6 +10,12 @@
 //
 // Auxiliary variables (intersection, saturation, radical membership) are added in a larger ring
 // with a fresh name and eliminated; they never appear in a result.
+//
+// The zero ideal's reduced basis is empty, and operations return it so (an intersection with a
+// zero generator, an elimination that keeps nothing). Sum, product, intersection and
+// containment take it back as an argument where the answer needs no ring: I + 0 = I, I·0 = 0,
+// I ∩ 0 = 0, 0 ⊆ I, and J ⊆ 0 iff every generator of J is zero. Operations that need the ring
+// and have no generator to read it from throw InputError.
 #pragma once
 
 #include <optional>

@@ -147,6 +147,30 @@ TEST(IdealOps, IntersectionIsContainedInBothAndContainsTheProduct) {
     }
 }
 
+// The zero ideal's basis is empty, and operations that return it take it back: found by the
+// intersection test at LOCUS_TEST_MULTIPLIER=20, whose random generators cancelled to zero,
+// so that the intersection was the zero ideal and the containment after it threw.
+TEST(IdealOps, TheZeroIdealAsAnEmptyBasisIsAnArgument) {
+    const RingPtr r = xyz();
+    const auto i = polys(r, {"x^2-y", "y*z"});
+    const auto zero_generator = polys(r, {"0"});
+    const std::vector<Polynomial> zero = ideal_intersection(i, zero_generator);
+    EXPECT_TRUE(zero.empty());
+    const std::vector<Polynomial> none;
+    EXPECT_TRUE(ideal_contains(i, zero));
+    EXPECT_TRUE(ideal_contains(zero, zero));
+    EXPECT_TRUE(ideal_contains(zero, zero_generator));
+    EXPECT_FALSE(ideal_contains(zero, i));
+    EXPECT_TRUE(ideal_equal(zero, zero_generator));
+    EXPECT_FALSE(ideal_equal(zero, i));
+    EXPECT_TRUE(ideal_product(i, zero).empty());
+    EXPECT_TRUE(ideal_intersection(zero, i).empty());
+    EXPECT_TRUE(ideal_equal(ideal_sum(i, zero), i));
+    EXPECT_TRUE(ideal_sum(zero, none).empty());
+    // What needs the ring still says so.
+    EXPECT_THROW(ideal_quotient(zero, none), InputError);
+}
+
 TEST(IdealOps, RadicalMembershipAndDimension) {
     const RingPtr r = xyz();
     const auto gens = polys(r, {"x^3", "y^2"});
