@@ -27,15 +27,19 @@
 namespace locus::render {
 namespace {
 
-// A random dense-ish polynomial of the given degree as text.
+// A random dense-ish polynomial of the given degree as text (x^degree added when every term
+// of that degree drew a zero coefficient: at LOCUS_TEST_MULTIPLIER=400 one seed drew a
+// constant, which defines no surface).
 std::string random_equation(std::mt19937_64& rng, int degree) {
     std::uniform_int_distribution<int> coefficient(-5, 5);
     std::string text = "1";
+    bool top = false;
     for (int a = 0; a <= degree; ++a) {
         for (int b = 0; a + b <= degree; ++b) {
             for (int c = 0; a + b + c <= degree; ++c) {
                 const int k = coefficient(rng);
                 if (k != 0 && (rng() % 3 == 0 || a + b + c == degree)) {
+                    top = top || a + b + c == degree;
                     // Appended piece by piece: GCC 12 warns (-Wrestrict) on "lit" + to_string.
                     if (k > 0) {
                         text += '+';
@@ -50,6 +54,10 @@ std::string random_equation(std::mt19937_64& rng, int degree) {
                 }
             }
         }
+    }
+    if (!top) {
+        text += "+x^";
+        text += std::to_string(degree);
     }
     return text;
 }
