@@ -259,6 +259,7 @@ TYPED_TEST(RootFinderTest, RandomProductsAgainstKnownFirstRoot) {
 }
 
 TYPED_TEST(RootFinderTest, RandomDoubleRootsAreHits) {
+    int misses = 0;
     for (int seed = 0; seed < seed_count(1000); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         std::mt19937_64 rng(seed);
@@ -287,8 +288,23 @@ TYPED_TEST(RootFinderTest, RandomDoubleRootsAreHits) {
         }
         const double split =
             std::sqrt(8.0 * std::numeric_limits<double>::epsilon() * magnitude / std::abs(second));
-        this->expect_hit(f, lo, hi, twice, 1e-6 + split / std::max(1.0, hi - lo));
+        // The same rounding may turn the double root into a complex pair, and the rounded F has
+        // no root there: an answer past it (a miss, or the next root) is right only where F at
+        // the double root is within that rounding (at LOCUS_TEST_MULTIPLIER=400 `sturm` passed
+        // two such roots).
+        const double allowed = 1e-6 + split / std::max(1.0, hi - lo);
+        const RootResult result = this->solve(f, lo, hi);
+        if (result.status == RootStatus::miss ||
+            result.t - twice > allowed * std::max(1.0, hi - lo)) {
+            EXPECT_LE(std::abs(f(twice)), 8.0 * std::numeric_limits<double>::epsilon() * magnitude)
+                << "past the double root on [" << lo << ", " << hi
+                << "] where F is not tangent to zero";
+            ++misses;
+            continue;
+        }
+        this->expect_hit(f, lo, hi, twice, allowed);
     }
+    EXPECT_LE(misses, seed_count(1000) / 1000);
 }
 
 // Regression (stability atlas, cayley_line): a ray lying in the surface was `unknown` in every
