@@ -317,7 +317,12 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
                                              guess_reach / (b - a))
                    : isolate_first_root(ball, kSegmentDepth);
         work += isolation.work;
-        const double margin = 4.0 * kUnit * std::max(std::abs(a), std::abs(b)) + kTiny;
+        // The map σ → t rounds (4u of the larger end); a guided search's piece ends are not
+        // dyadic and are themselves within 8u of exact in σ (isolate_first_root_near), so 8u of
+        // the segment more — without it an undecided piece's re-search could start past its
+        // exact start, leaving a sliver no piece had shown free of roots.
+        const double margin = 4.0 * kUnit * std::max(std::abs(a), std::abs(b)) +
+                              (guided ? 9.0 * kUnit * (b - a) : 0.0) + kTiny;
         const auto t_at = [&](double sigma) { return a + sigma * (b - a); };
         if (isolation.kind == Isolation::Kind::no_root) {
             continue;

@@ -89,13 +89,13 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
         longest_yz = std::max(longest_yz, yz_sum);
         x_sum += x_group.ex + 1;
     }
-    // The pure powers' Taylor shift: a path goes through at most n multiply-adds (three
-    // roundings each: the product, and the two sums of a radius), then d^j (j products) and
-    // the product a_j·d^j added into the result; the result's chains gain an addend per such
-    // axis.
+    // The pure powers' Taylor shift: a radius' path goes through at most n multiply-adds (five
+    // roundings each: (|b| + r_b), its product with r_o, the two inner sums and the sum into
+    // the radius), then d^j (j products) and the product a_j·d^j added into the result; the
+    // result's chains gain an addend per such axis.
     int longest_horner = 0;
     for (const Univariate& u : univariate_) {
-        longest_horner = std::max(longest_horner, 4 * u.degree + 4);
+        longest_horner = std::max(longest_horner, 6 * u.degree + 8);
     }
     rounding_depth_ =
         2 * std::max(degree_, 0) + 3 + longest_z + longest_yz + x_sum + 3 + longest_horner;
@@ -401,9 +401,15 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
     if (n[0] + n[1] + n[2] == 0) {
         return;
     }
+    // c_k of an axis' pure powers: zero for k = 0 (the groups' constant), for absent powers,
+    // and for an axis without pure powers (its by_exponent is empty).
     const auto coefficient_of = [&](std::size_t axis, int k) {
-        const ZTerm& term = univariate_[axis].by_exponent[static_cast<std::size_t>(k)];
-        return k > 0 && term.ez >= 0 ? coefficient(term) : Scalar::zero();
+        const std::vector<ZTerm>& by_exponent = univariate_[axis].by_exponent;
+        if (k <= 0 || static_cast<std::size_t>(k) >= by_exponent.size() ||
+            by_exponent[static_cast<std::size_t>(k)].ez < 0) {
+            return Scalar::zero();
+        }
+        return coefficient(by_exponent[static_cast<std::size_t>(k)]);
     };
     // Pass j sets a_k += o·a_(k+1) for k from n − 1 down to j: each step waits for the one
     // before it, so the passes run as a wavefront, the steps (j, k) of one diagonal
