@@ -110,34 +110,39 @@ CompiledPolynomial::CompiledPolynomial(std::shared_ptr<const Exact> exact, bool 
     underflow_multiplier_ = (n + 8.0) * std::max(1.0, sum_of_magnitudes * 1.01);
 }
 
-void CompiledPolynomial::plan_line_evaluation() {
-    // Each axis's highest exponent in a term that is not one of its pure powers (the constant
-    // counts as such a term of every axis), and the chains: its pure powers above that.
-    std::array<int, 3> mixed{0, 0, 0};
-    const auto exponents = [](const CompiledTerm& t) {
-        return std::array<int, 3>{t.ex, t.ey, t.ez};
-    };
-    const auto pure_axis = [&](const CompiledTerm& t) {
-        const std::array<int, 3> e = exponents(t);
-        const int nonzero = (e[0] > 0) + (e[1] > 0) + (e[2] > 0);
-        return nonzero != 1 ? -1 : (e[0] > 0 ? 0 : (e[1] > 0 ? 1 : 2));
-    };
-    for (const CompiledTerm& t : terms_) {
-        const std::array<int, 3> e = exponents(t);
+int pure_power_axis(const CompiledTerm& term) {
+    const int nonzero = (term.ex > 0) + (term.ey > 0) + (term.ez > 0);
+    return nonzero != 1 ? -1 : (term.ex > 0 ? 0 : (term.ey > 0 ? 1 : 2));
+}
+
+std::array<int, 3> exponents_besides_pure_powers(std::span<const CompiledTerm> terms) {
+    std::array<int, 3> besides{0, 0, 0};
+    for (const CompiledTerm& t : terms) {
+        const std::array<int, 3> e{t.ex, t.ey, t.ez};
+        const int pure = pure_power_axis(t);
         for (int axis = 0; axis < 3; ++axis) {
-            if (pure_axis(t) != axis) {
-                mixed[axis] = std::max(mixed[axis], e[axis]);
+            if (axis != pure) {
+                besides[axis] = std::max(besides[axis], e[axis]);
             }
         }
     }
+    return besides;
+}
+
+void CompiledPolynomial::plan_line_evaluation() {
+    // The chains: each axis's pure powers above its exponents in the other terms.
+    const std::array<int, 3> mixed = exponents_besides_pure_powers(terms_);
+    const auto exponents = [](const CompiledTerm& t) {
+        return std::array<int, 3>{t.ex, t.ey, t.ez};
+    };
     const auto in_chain = [&](const CompiledTerm& t) {
-        const int axis = pure_axis(t);
+        const int axis = pure_power_axis(t);
         return axis >= 0 && exponents(t)[axis] > mixed[axis];
     };
     std::array<int, 3> stride{0, 0, 0}, top{0, 0, 0};
     for (const CompiledTerm& t : terms_) {
         if (in_chain(t)) {
-            const int axis = pure_axis(t), k = exponents(t)[axis];
+            const int axis = pure_power_axis(t), k = exponents(t)[axis];
             stride[axis] = std::gcd(stride[axis], k);
             top[axis] = std::max(top[axis], k);
         }
@@ -155,7 +160,7 @@ void CompiledPolynomial::plan_line_evaluation() {
         chain.low.assign(length, 0.0);
         chain.magnitude.assign(length, 0.0);
         for (std::size_t i = 0; i < terms_.size(); ++i) {
-            if (in_chain(terms_[i]) && pure_axis(terms_[i]) == axis) {
+            if (in_chain(terms_[i]) && pure_power_axis(terms_[i]) == axis) {
                 const auto m = static_cast<std::size_t>(exponents(terms_[i])[axis] / chain.stride);
                 chain.high[m] = terms_[i].coefficient;
                 chain.low[m] = low_words_[i];

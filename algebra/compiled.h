@@ -32,6 +32,14 @@ struct CompiledTerm {
     int ex, ey, ez;
 };
 
+// The axis (0, 1, 2 for x, y, z) a term is a pure power of, c·x^k with k ≥ 1; −1 for a
+// mixed term or the constant.
+int pure_power_axis(const CompiledTerm& term);
+// Per axis, the highest exponent of that axis among the terms that are not its pure powers (0
+// when there are none). An axis's pure powers above it can be taken by Horner-type schemes
+// with no power table past it: enclose_on_line's chains here, and render's LineRestrictor.
+std::array<int, 3> exponents_besides_pure_powers(std::span<const CompiledTerm> terms);
+
 struct ValueGradient {
     double value;
     Point3 gradient;

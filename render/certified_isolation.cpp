@@ -1,7 +1,6 @@
 #include "render/certified_isolation.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -26,26 +25,6 @@ int certain_sign_changes(const BernsteinBall& g) {
         negative = next_negative;
     }
     return uncertain ? -1 : changes;
-}
-
-// The same for degrees above 12, where the unrolled loop's carried signs made it a chain: the
-// signs first, then the changes between neighbours, two loops without a carried dependency
-// that the compiler turns into vector operations.
-int certain_sign_changes_rows(const BernsteinBall& g) {
-    const int n = g.degree;
-    std::array<int, kMaxDegree + 1> sign;
-    int uncertain = 0;
-    for (int i = 0; i <= n; ++i) {
-        const int positive = g.b[i] - g.r[i] > 0.0 ? 1 : 0;
-        const int negative = g.b[i] + g.r[i] < 0.0 ? 1 : 0;
-        sign[i] = positive - negative;
-        uncertain |= (positive | negative) ^ 1;
-    }
-    int changes = 0;
-    for (int i = 0; i < n; ++i) {
-        changes += sign[i] * sign[i + 1] < 0 ? 1 : 0;
-    }
-    return uncertain != 0 ? -1 : changes;
 }
 
 }  // namespace
@@ -96,7 +75,7 @@ int most_sign_changes(const BernsteinBall& g) {
         changes = certain_sign_changes<12>(g);
         break;
     default:
-        changes = certain_sign_changes_rows(g);
+        changes = certain_sign_changes<-1>(g);
         break;
     }
     if (changes >= 0) {

@@ -11,30 +11,12 @@ namespace locus::render {
 
 LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
                                std::span<const double> low_words) {
-    // The axis a term is a pure power of (−1: none, or the constant).
-    const auto pure_axis = [](const algebra::CompiledTerm& term) {
-        const int exponents[3] = {term.ex, term.ey, term.ez};
-        int axis = -1;
-        for (int a = 0; a < 3; ++a) {
-            if (exponents[a] > 0) {
-                if (axis >= 0) {
-                    return -1;
-                }
-                axis = a;
-            }
-        }
-        return axis;
-    };
-    std::array<int, 3> pure_degree{}, other_exponent{};
+    const std::array<int, 3> other_exponent = algebra::exponents_besides_pure_powers(terms);
+    std::array<int, 3> pure_degree{};
     for (const algebra::CompiledTerm& term : terms) {
-        const int exponents[3] = {term.ex, term.ey, term.ez};
-        const int axis = pure_axis(term);
-        for (int a = 0; a < 3; ++a) {
-            if (a == axis) {
-                pure_degree[a] = std::max(pure_degree[a], exponents[a]);
-            } else {
-                other_exponent[a] = std::max(other_exponent[a], exponents[a]);
-            }
+        const int axis = algebra::pure_power_axis(term);
+        if (axis >= 0) {
+            pure_degree[axis] = std::max(pure_degree[axis], term.ex + term.ey + term.ez);
         }
     }
     for (int a = 0; a < 3; ++a) {
@@ -51,7 +33,7 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
         const algebra::CompiledTerm& term = terms[i];
         const double low_word = i < low_words.size() ? low_words[i] : 0.0;
         degree_ = std::max(degree_, term.ex + term.ey + term.ez);
-        const int axis = pure_axis(term);
+        const int axis = algebra::pure_power_axis(term);
         if (axis >= 0 && univariate_[axis].degree > 0) {
             const int k = term.ex + term.ey + term.ez;
             ZTerm& slot = univariate_[axis].by_exponent[k];
@@ -181,9 +163,15 @@ struct DoubleDoubleBall {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-void shift_balls(std::array<std::array<double, kMaxDegree + 2>, 3>& v,
-                 std::array<std::array<double, kMaxDegree + 2>, 3>& r, const std::array<Ball, 3>& o,
+void shift_balls(std::array<std::array<Ball, kMaxDegree + 1>, 3>& a, const std::array<Ball, 3>& o,
                  const std::array<int, 3>& n) {
+    std::array<std::array<double, kMaxDegree + 2>, 3> v{}, r{};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k <= n[axis]; ++k) {
+            v[axis][static_cast<std::size_t>(k)] = a[axis][static_cast<std::size_t>(k)].v;
+            r[axis][static_cast<std::size_t>(k)] = a[axis][static_cast<std::size_t>(k)].r;
+        }
+    }
     std::array<double, 3> value{}, magnitude{}, radius{};
     for (std::size_t axis = 0; axis < 3; ++axis) {
         value[axis] = o[axis].v;
@@ -206,6 +194,12 @@ void shift_balls(std::array<std::array<double, kMaxDegree + 2>, 3>& v,
                     om * br + (std::abs(bv) + br) * orad + kUnit * (std::abs(p) + std::abs(sum));
                 values[i] = sum;
             }
+        }
+    }
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k <= n[axis]; ++k) {
+            a[axis][static_cast<std::size_t>(k)] = {v[axis][static_cast<std::size_t>(k)],
+                                                    r[axis][static_cast<std::size_t>(k)]};
         }
     }
 }
@@ -401,48 +395,31 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
     if (n[0] + n[1] + n[2] == 0) {
         return;
     }
-    // c_k of an axis' pure powers: zero for k = 0 (the groups' constant), for absent powers,
-    // and for an axis without pure powers (its by_exponent is empty).
+    // c_k of an axis' pure powers, k ≤ n[axis]: zero for k = 0 (the groups' constant; the only
+    // k asked of an axis without pure powers, whose by_exponent is empty) and for absent powers.
     const auto coefficient_of = [&](std::size_t axis, int k) {
-        const std::vector<ZTerm>& by_exponent = univariate_[axis].by_exponent;
-        if (k <= 0 || static_cast<std::size_t>(k) >= by_exponent.size() ||
-            by_exponent[static_cast<std::size_t>(k)].ez < 0) {
+        if (k == 0) {
             return Scalar::zero();
         }
-        return coefficient(by_exponent[static_cast<std::size_t>(k)]);
+        const ZTerm& term = univariate_[axis].by_exponent[static_cast<std::size_t>(k)];
+        return term.ez >= 0 ? coefficient(term) : Scalar::zero();
     };
     // Pass j sets a_k += o·a_(k+1) for k from n − 1 down to j: each step waits for the one
     // before it, so the passes run as a wavefront, the steps (j, k) of one diagonal
     // s = j + n − 1 − k together (each needs only steps of diagonal s − 1): one pass after
     // another was slower than Horner's rule, whose steps are independent. A diagonal is
     // k = n − 1 − s … n − 1 in ascending order, each step reading a_(k+1) before the next step
-    // writes it: for balls (on separate arrays of values and radii), a loop the compiler turns
-    // into vector operations. Then a_j·d^j is added into the result.
+    // writes it: for balls (shift_balls, on separate arrays of values and radii), a loop the
+    // compiler turns into vector operations. Then a_j·d^j is added into the result.
+    std::array<std::array<Scalar, kMaxDegree + 1>, 3> a;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k <= n[axis]; ++k) {
+            a[axis][static_cast<std::size_t>(k)] = coefficient_of(axis, k);
+        }
+    }
     if constexpr (std::is_same_v<Scalar, Ball>) {
-        std::array<std::array<double, kMaxDegree + 2>, 3> values{}, radii{};
-        for (std::size_t axis = 0; axis < 3; ++axis) {
-            for (int k = 0; k <= n[axis]; ++k) {
-                const Ball c = coefficient_of(axis, k);
-                values[axis][static_cast<std::size_t>(k)] = c.v;
-                radii[axis][static_cast<std::size_t>(k)] = c.r;
-            }
-        }
-        shift_balls(values, radii, origin, n);
-        for (std::size_t axis = 0; axis < 3; ++axis) {
-            Ball power = Ball::one();  // d^j
-            for (int j = 0; j <= n[axis] && n[axis] > 0; ++j) {
-                const auto jj = static_cast<std::size_t>(j);
-                Ball::multiply_add(result[jj], Ball{values[axis][jj], radii[axis][jj]}, power);
-                power = power * direction[axis];
-            }
-        }
+        shift_balls(a, origin, n);
     } else {
-        std::array<std::array<Scalar, kMaxDegree + 1>, 3> a;
-        for (std::size_t axis = 0; axis < 3; ++axis) {
-            for (int k = 0; k <= n[axis]; ++k) {
-                a[axis][static_cast<std::size_t>(k)] = coefficient_of(axis, k);
-            }
-        }
         const int longest = std::max({n[0], n[1], n[2]});
         for (int diagonal = 0; diagonal < longest; ++diagonal) {
             for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -453,13 +430,16 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
                 }
             }
         }
-        for (std::size_t axis = 0; axis < 3; ++axis) {
-            Scalar power = Scalar::one();  // d^j
-            for (int j = 0; j <= n[axis] && n[axis] > 0; ++j) {
-                Scalar::multiply_add(result[static_cast<std::size_t>(j)],
-                                     a[axis][static_cast<std::size_t>(j)], power);
-                power = power * direction[axis];
-            }
+    }
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        if (n[axis] == 0) {
+            continue;
+        }
+        Scalar power = Scalar::one();  // d^j
+        for (int j = 0; j <= n[axis]; ++j) {
+            Scalar::multiply_add(result[static_cast<std::size_t>(j)],
+                                 a[axis][static_cast<std::size_t>(j)], power);
+            power = power * direction[axis];
         }
     }
 }
