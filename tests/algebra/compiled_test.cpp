@@ -17,6 +17,7 @@
 #include "algebra/print.h"
 #include "algebra/real_roots.h"
 #include "tests/support/chmutov.h"
+#include "tests/support/exact_ray_oracle.h"
 #include "tests/support/test_data.h"
 
 namespace locus::algebra {
@@ -80,9 +81,12 @@ TEST(CompiledPolynomial, ValueAndGradientAgreeWithExactEvaluation) {
 }
 
 // enclose_on_line's enclosures hold the exact value of the exact f at the exact point o + t·d,
-// in doubles and in double-double: on random polynomials, and on ones whose pure powers it
-// takes by Horner's rule (chains: Chmutov's T_n, odd and even; pure powers above and below an
-// axis's other exponents; a z chain beside low z powers and the constant).
+// in doubles and in double-double — the exact value from FLINT's own parser and composition
+// (tests/support/exact_ray_oracle.h), which share no code with the compile step. On random
+// polynomials, and on ones whose pure powers it takes by Horner's rule (chains: Chmutov's T_n,
+// odd and even; pure powers above and below an axis's other exponents; a z chain beside low z
+// powers and the constant); at random points of random lines and at points next to a root
+// along them, where the terms cancel most.
 TEST(CompiledPolynomial, EnclosuresOnALineHoldTheExactValue) {
     const RingPtr ring = PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
     std::vector<std::string> equations = {test::chmutov_equation(6),
@@ -96,7 +100,7 @@ TEST(CompiledPolynomial, EnclosuresOnALineHoldTheExactValue) {
         equations.push_back(to_string(test::random_polynomial(ring, rng, 9, 6)));
     }
     std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(0.05, 1.6);
-    int checked = 0;
+    int checked = 0, near_roots = 0;
     for (const std::string& equation : equations) {
         SCOPED_TRACE(equation);
         const Polynomial parsed = parse_polynomial(equation, ring);
@@ -104,43 +108,59 @@ TEST(CompiledPolynomial, EnclosuresOnALineHoldTheExactValue) {
             continue;
         }
         const CompiledPolynomial compiled = compile_surface(parsed);
-        const Polynomial kept = parse_polynomial(compiled.equation(), ring);
+        const test::ExactRayOracle oracle(compiled.equation());
         for (int trial = 0; trial < 40; ++trial) {
             const double size = scale(rng);
             const Point3 origin = {size * unit(rng), size * unit(rng), size * unit(rng)};
             const Point3 direction = {unit(rng), unit(rng), unit(rng)};
-            const double t = 0.5 * unit(rng);
-            std::array<Rational, 3> point;
-            Rational o, d, at;
-            set_exact_double(at.get(), t);
-            for (std::size_t axis = 0; axis < 3; ++axis) {
-                set_exact_double(o.get(), origin[axis]);
-                set_exact_double(d.get(), direction[axis]);
-                fmpq_mul(point[axis].get(), d.get(), at.get());
-                fmpq_add(point[axis].get(), point[axis].get(), o.get());
+            const auto value_at = [&](double t) {
+                return compiled.value({origin[0] + t * direction[0], origin[1] + t * direction[1],
+                                       origin[2] + t * direction[2]});
+            };
+            std::vector<double> ts = {0.5 * unit(rng)};
+            // A root along the line, by bisection in doubles on a sign change of f, and the
+            // doubles either side of it.
+            for (int k = 0; k < 64; ++k) {
+                double lo = -1.0 + k / 32.0, hi = lo + 1.0 / 32.0;
+                if ((value_at(lo) > 0.0) == (value_at(hi) > 0.0)) {
+                    continue;
+                }
+                for (int step = 0; step < 80; ++step) {
+                    const double middle = 0.5 * (lo + hi);
+                    ((value_at(middle) > 0.0) == (value_at(lo) > 0.0) ? lo : hi) = middle;
+                }
+                ts.insert(ts.end(), {lo, hi, std::nextafter(lo, -1.0), std::nextafter(hi, 1.0)});
+                ++near_roots;
+                break;
             }
-            const Rational exact = kept.evaluate(point);
-            for (const auto precision : {CompiledPolynomial::Precision::double_precision,
-                                         CompiledPolynomial::Precision::double_double}) {
-                const ValueEnclosure e = compiled.enclose_on_line(origin, direction, t, precision);
-                ASSERT_TRUE(std::isfinite(e.radius));
-                // |exact − (value + value_low)| ≤ radius, in rationals.
-                Rational difference, part;
-                set_exact_double(part.get(), e.value);
-                fmpq_sub(difference.get(), exact.get(), part.get());
-                set_exact_double(part.get(), e.value_low);
-                fmpq_sub(difference.get(), difference.get(), part.get());
-                fmpq_abs(difference.get(), difference.get());
-                set_exact_double(part.get(), e.radius);
-                EXPECT_LE(fmpq_cmp(difference.get(), part.get()), 0)
-                    << "t " << t << ", double-double "
-                    << (precision == CompiledPolynomial::Precision::double_double) << ": value "
-                    << e.value << " radius " << e.radius << ", exact " << fmpq_get_d(exact.get());
-                ++checked;
+            for (const double t : ts) {
+                Rational exact;
+                oracle.value_on_line(origin, direction, t, exact.get());
+                for (const auto precision : {CompiledPolynomial::Precision::double_precision,
+                                             CompiledPolynomial::Precision::double_double}) {
+                    const ValueEnclosure e =
+                        compiled.enclose_on_line(origin, direction, t, precision);
+                    ASSERT_TRUE(std::isfinite(e.radius));
+                    // |exact − (value + value_low)| ≤ radius, in rationals.
+                    Rational difference, part;
+                    set_exact_double(part.get(), e.value);
+                    fmpq_sub(difference.get(), exact.get(), part.get());
+                    set_exact_double(part.get(), e.value_low);
+                    fmpq_sub(difference.get(), difference.get(), part.get());
+                    fmpq_abs(difference.get(), difference.get());
+                    set_exact_double(part.get(), e.radius);
+                    EXPECT_LE(fmpq_cmp(difference.get(), part.get()), 0)
+                        << "t " << t << ", double-double "
+                        << (precision == CompiledPolynomial::Precision::double_double) << ": value "
+                        << e.value << " radius " << e.radius << ", exact "
+                        << fmpq_get_d(exact.get());
+                    ++checked;
+                }
             }
         }
     }
-    EXPECT_GT(checked, 800);
+    EXPECT_GT(checked, 1500);
+    EXPECT_GT(near_roots, 100);
 }
 
 TEST(ExactFirstRoot, SphereAlongAnAxisIsExact) {
