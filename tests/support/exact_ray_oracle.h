@@ -166,18 +166,9 @@ class ExactRayOracle {
     // f(o + t·d) exactly, for the doubles o, d and t read exactly.
     void value_on_line(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
                        double t, fmpq_t out) const {
-        Poly line[3];
-        fmpq_poly_struct* lines[3];
-        Q value;
-        for (int i = 0; i < 3; ++i) {
-            exact(value.q, origin[i]);
-            fmpq_poly_set_coeff_fmpq(line[i].p, 0, value.q);
-            exact(value.q, direction[i]);
-            fmpq_poly_set_coeff_fmpq(line[i].p, 1, value.q);
-            lines[i] = line[i].p;
-        }
         Poly F;
-        fmpq_mpoly_compose_fmpq_poly(F.p, f_, lines, ctx_);
+        compose(origin, direction, F.p);
+        Q value;
         exact(value.q, t);
         fmpq_poly_evaluate_fmpq(out, F.p, value.q);
     }
@@ -185,18 +176,8 @@ class ExactRayOracle {
     Restriction restrict(const std::array<double, 3>& origin,
                          const std::array<double, 3>& direction) const {
         Restriction r;
-        Poly line[3];
-        fmpq_poly_struct* lines[3];
-        Q value;
-        for (int i = 0; i < 3; ++i) {
-            exact(value.q, origin[i]);
-            fmpq_poly_set_coeff_fmpq(line[i].p, 0, value.q);
-            exact(value.q, direction[i]);
-            fmpq_poly_set_coeff_fmpq(line[i].p, 1, value.q);
-            lines[i] = line[i].p;
-        }
         Poly F;
-        fmpq_mpoly_compose_fmpq_poly(F.p, f_, lines, ctx_);
+        compose(origin, direction, F.p);
         if (fmpq_poly_is_zero(F.p)) {
             r.zero = true;
             return r;
@@ -327,6 +308,22 @@ class ExactRayOracle {
     }
 
   private:
+    // F(t) = f(o + t·d) over Q, for the doubles o and d read exactly.
+    void compose(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
+                 fmpq_poly_t F) const {
+        Poly line[3];
+        fmpq_poly_struct* lines[3];
+        Q value;
+        for (int i = 0; i < 3; ++i) {
+            exact(value.q, origin[i]);
+            fmpq_poly_set_coeff_fmpq(line[i].p, 0, value.q);
+            exact(value.q, direction[i]);
+            fmpq_poly_set_coeff_fmpq(line[i].p, 1, value.q);
+            lines[i] = line[i].p;
+        }
+        fmpq_mpoly_compose_fmpq_poly(F, f_, lines, ctx_);
+    }
+
     struct Poly {
         fmpq_poly_t p;
         Poly() { fmpq_poly_init(p); }
