@@ -336,4 +336,59 @@ ValueSlope MidpointPolynomial::at(double sigma) const {
     return out;
 }
 
+SlopeBounds slope_bounds(const BernsteinBall& g) {
+    SlopeBounds out;
+    const int n = g.degree;
+    if (n < 1) {
+        out.hull_lo = out.hull_hi = out.point_error = out.curvature = 0.0;
+        return out;
+    }
+    // Each first difference fl(b_{i+1} − b_i) is within u of its exact value, and the exact
+    // coefficients' differences within r_i + r_{i+1} of that.
+    double hull_lo = INFINITY, hull_hi = -INFINITY, largest_difference = 0.0, radii = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double difference = g.b[i + 1] - g.b[i];
+        const double blur =
+            (g.r[i] + g.r[i + 1] + 2.0 * kUnit * std::abs(difference)) * (1.0 + 4.0 * kUnit) +
+            kUnderflow;
+        hull_lo = std::min(hull_lo, difference - blur);
+        hull_hi = std::max(hull_hi, difference + blur);
+        largest_difference = std::max(largest_difference, std::abs(difference));
+        radii = std::max(radii, g.r[i] + g.r[i + 1]);
+    }
+    // n·x and the subtractions above round once more each: 4u of the result covers both.
+    const double widen = 1.0 + gamma(8);
+    const auto down = [&](double x) {
+        return n * x - std::abs(n * x) * (widen - 1.0) - kUnderflow;
+    };
+    const auto up = [&](double x) { return n * x + std::abs(n * x) * (widen - 1.0) + kUnderflow; };
+    out.hull_lo = down(hull_lo);
+    out.hull_hi = up(hull_hi);
+    // MidpointPolynomial::at sums (b_{i+1} − b_i)·C(n − 1, i)·σ^i·s^(n−1−i), s = fl(1 − σ): every
+    // term meets at most 3n + 4 roundings (the difference, the weight, the n − 1 − i products
+    // of s and s's own rounding, i products by σ and i + 1 sums, the final n·), so the slope is
+    // within γ_{3n+4}·n·Σ|b_{i+1} − b_i|·B_{i,n−1}(σ) ≤ γ_{3n+4}·n·max|b_{i+1} − b_i| of the
+    // midpoint polynomial's (the B_{i,n−1} ≥ 0 sum to 1), which is within n·max(r_i + r_{i+1})
+    // of the exact one's.
+    out.point_error = n * (radii + gamma(4 * n + 8) * largest_difference) * widen + kUnderflow;
+    if (n < 2) {
+        out.curvature = 0.0;
+    } else {
+        double curvature = 0.0;
+        for (int i = 0; i + 2 <= n; ++i) {
+            const double second = g.b[i + 2] - 2.0 * g.b[i + 1] + g.b[i];
+            const double magnitude =
+                std::abs(g.b[i + 2]) + 2.0 * std::abs(g.b[i + 1]) + std::abs(g.b[i]);
+            curvature = std::max(curvature, std::abs(second) + g.r[i] + 2.0 * g.r[i + 1] +
+                                                g.r[i + 2] + gamma(3) * magnitude);
+        }
+        out.curvature = static_cast<double>(n) * (n - 1) * curvature * widen + kUnderflow;
+    }
+    if (!std::isfinite(out.hull_lo) || !std::isfinite(out.hull_hi) ||
+        !std::isfinite(out.point_error) || !std::isfinite(out.curvature)) {
+        out = SlopeBounds{};
+    }
+    return out;
+}
+
 }  // namespace locus::render

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 
 #include "render/ray_restriction.h"
 #include "render/root_finder.h"
@@ -66,6 +67,7 @@ struct ValueSlope {
 class MidpointPolynomial {
   public:
     explicit MidpointPolynomial(const BernsteinBall& g);
+    // For σ ∈ [0, 1]; the slope is within SlopeBounds::point_error of the exact polynomial's.
     ValueSlope at(double sigma) const;
 
   private:
@@ -73,5 +75,21 @@ class MidpointPolynomial {
     std::array<double, kMaxDegree + 1> value_;  // b_i·C(n, i)
     std::array<double, kMaxDegree + 1> slope_;  // (b_{i+1} − b_i)·C(n − 1, i)
 };
+
+// What the ball says about the derivative of the exact polynomial it holds, rigorously, for a
+// mean-value step (CertifiedTracer::narrow): for every σ, σ' ∈ [0, 1],
+//   * G'(σ) ∈ [hull_lo, hull_hi], the hull of the derivative's Bernstein coefficients
+//     n·(β_{i+1} − β_i) (empty of 0 when G is monotone there, and certainly so);
+//   * |G'(σ) − MidpointPolynomial::at(σ).slope| ≤ point_error;
+//   * |G'(σ) − G'(σ')| ≤ curvature·|σ − σ'|, curvature bounding |G''| by the hull of the second
+//     differences n(n − 1)·(β_{i+2} − 2β_{i+1} + β_i).
+// O(n), where evaluate() on the derivative would cost O(n²): the point's slope is the midpoint
+// polynomial's, which Newton's steps compute anyway.
+struct SlopeBounds {
+    double hull_lo = -INFINITY, hull_hi = INFINITY;
+    double point_error = INFINITY;
+    double curvature = INFINITY;
+};
+SlopeBounds slope_bounds(const BernsteinBall& g);
 
 }  // namespace locus::render

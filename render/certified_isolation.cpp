@@ -254,7 +254,8 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     return out;
 }
 
-Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) {
+Bracket narrow_root(const BernsteinBall& piece, const MidpointPolynomial& midpoint,
+                    int sign_at_zero, double width) {
     Bracket out;
     double a = 0.0, b = 1.0;  // G(a) has sign_at_zero, G(b) the opposite, both certified
     const auto sign_at = [&](double p) {
@@ -270,7 +271,6 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
     for (int i = 0; i <= piece.degree; ++i) {
         noise = std::max(noise, piece.r[i]);
     }
-    const MidpointPolynomial midpoint(piece);
     double slope = 0.0;
     {
         double lo = 0.0, hi = 1.0, x = 0.5;
@@ -391,6 +391,79 @@ Bracket narrow_root(const BernsteinBall& piece, int sign_at_zero, double width) 
     out.hi = b;
     out.certified = b - a <= width;
     out.estimate = std::clamp(out.estimate, a, b);
+    return out;
+}
+
+RootRange mean_value_bracket(const MidpointPolynomial& midpoint, const SlopeBounds& slopes,
+                             int sign_at_zero, double sigma, double blur, double value,
+                             double error, double lo, double hi) {
+    RootRange out{lo, hi};
+    constexpr double kUnit = 0x1.0p-53;
+    constexpr double kSlack = 1.0 + 8.0 * kUnit;  // a few roundings of a product or quotient
+    const double slope = std::abs(midpoint.at(sigma).slope);
+    const double size = (std::abs(value) + error) * kSlack;  // ≥ |G(s)|
+    if (!(sigma >= 0.0 && sigma <= 1.0) || !(blur >= 0.0) || !std::isfinite(size) ||
+        !(slope > 0.0) || !std::isfinite(slope)) {
+        return out;
+    }
+    // The bound on |G'(ξ) − slope| when |ξ − s| ≤ ρ (so |ξ − σ| ≤ ρ + blur); below half the
+    // slope, slope − e is within 2u of exact.
+    const auto slope_error = [&](double reach) {
+        return (slopes.point_error + slopes.curvature * (reach + blur)) * kSlack;
+    };
+    // A first bound ρ on |σ* − s|: the bracket's; the hull's when G' keeps one sign on [0, 1]
+    // (|σ* − s| ≤ |G(s)|/min|G'|); or, for ρ = four Newton distances with [s − ρ, s + ρ] inside
+    // [0, 1]: when |G'| ≥ L > |G(s)|/ρ there, G is monotone on that interval and takes both signs
+    // at its ends, so its root there is σ*, the only one in [0, 1].
+    double reach = std::max(sigma + blur - lo, hi - sigma + blur) * kSlack;
+    const double hull_gap =
+        slopes.hull_lo > 0.0 ? slopes.hull_lo : (slopes.hull_hi < 0.0 ? -slopes.hull_hi : 0.0);
+    if (hull_gap > 0.0) {
+        reach = std::min(reach, size / hull_gap * kSlack);
+    }
+    const double candidate = 4.0 * size / slope;
+    if (candidate < reach && sigma - blur - candidate >= 4.0 * kUnit &&
+        sigma + blur + candidate <= 1.0 - 4.0 * kUnit) {
+        const double e = slope_error(candidate);
+        if (e < 0.5 * slope && size / (slope - e) * kSlack < candidate) {
+            reach = candidate;
+        }
+    }
+    // Each bound ρ gives |σ* − s| ≤ |G(s)|/(slope − e(ρ)), smaller once ρ is small.
+    double error_bound = INFINITY;  // e(ρ) for the last ρ that gave a bound
+    for (int i = 0; i < 4; ++i) {
+        const double e = slope_error(reach);
+        if (!(e < 0.5 * slope)) {
+            break;
+        }
+        error_bound = e;
+        const double next = size / (slope - e) * kSlack;
+        if (!(next < reach)) {
+            break;
+        }
+        reach = next;
+    }
+    if (!(error_bound < INFINITY)) {
+        return out;
+    }
+    double below = sigma - blur - reach, above = sigma + blur + reach;
+    if (std::abs(value) > error * (1.0 + 0x1.0p-50)) {
+        // G(s)'s sign is certain: σ* is on the side where G has the other sign, at least
+        // |G(s)|/max|G'| from s (|value| − error rounded down).
+        const double certain = std::abs(value) - error - 2.0 * kUnit * (std::abs(value) + error);
+        const double least = std::max(0.0, certain) / (slope + error_bound) / kSlack;
+        if ((value > 0.0) == (sign_at_zero > 0)) {
+            below = sigma - blur + least;
+        } else {
+            above = sigma + blur - least;
+        }
+    }
+    // The sums above round by at most u of the larger magnitude, ≤ 2.
+    out.lo = std::max(lo, below - 4.0 * kUnit);
+    out.hi = std::min(hi, above + 4.0 * kUnit);
+    if (!(out.lo <= out.hi)) {
+        out = RootRange{lo, hi};  // only rounding can get here: keep what is known
+    }
     return out;
 }
 

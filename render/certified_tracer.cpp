@@ -129,7 +129,9 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
                      4.0 * kUnit * std::max(std::abs(piece.t_lo), std::abs(piece.t_hi)) + kTiny;
     const double allowed = tolerance * tolerance_scale(piece.t_lo, piece.t_hi);
     const auto at = [&](double sigma) { return piece.t_lo + sigma * span; };
-    const Bracket bracket = narrow_root(piece.ball, piece.sign_at_lo, 0.5 * allowed / span);
+    const MidpointPolynomial midpoint(piece.ball);
+    const Bracket bracket =
+        narrow_root(piece.ball, midpoint, piece.sign_at_lo, 0.5 * allowed / span);
     work += bracket.work;
     const double lower = at(bracket.lo) - m, upper = at(bracket.hi) + m;
     if (bracket.certified || upper - lower <= allowed) {
@@ -146,6 +148,25 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
     // the arithmetic cannot tell leaves them as they are.
     double left = lower, right = upper;
     double probe_lo = at(bracket.lo) + m, probe_hi = at(bracket.hi) - m;
+    // The mean value theorem then places the root from one point (mean_value_bracket), in σ
+    // of the piece: a probe at p is G at σ(p), within the map's error of the σ p rounds to.
+    const SlopeBounds slopes = slope_bounds(piece.ball);
+    const auto mean_value_step = [&](double p, const algebra::ValueEnclosure& e) {
+        if (!(m < 0.01 * span)) {
+            return;
+        }
+        const double sigma = std::clamp((p - piece.t_lo) / span, 0.0, 1.0);
+        const double blur =
+            (std::abs(at(sigma) - p) * (1.0 + 4.0 * kUnit) + m + 2.0 * kUnit * std::abs(p)) / span *
+            (1.0 + 4.0 * m / span + 4.0 * kUnit);
+        const RootRange range =
+            mean_value_bracket(midpoint, slopes, piece.sign_at_lo, sigma, blur, e.value,
+                               std::abs(e.value_low) + e.radius, 0.0, 1.0);
+        left = std::max(left, at(range.lo) - m);
+        right = std::min(right, at(range.hi) + m);
+        probe_lo = std::max(probe_lo, left);
+        probe_hi = std::min(probe_hi, right);
+    };
     using Precision = algebra::CompiledPolynomial::Precision;
     for (const Precision precision : {Precision::double_precision, Precision::double_double}) {
         // Set when this precision's error bound exceeds what f reaches near the root
@@ -165,6 +186,7 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
                 } else if (e.sign() == -piece.sign_at_lo) {
                     right = probe_hi = p;
                 }
+                mean_value_step(p, e);
             }
             return e.value + e.value_low;
         };

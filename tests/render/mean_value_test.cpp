@@ -1,0 +1,228 @@
+// The mean-value step of the certified tracer (slope_bounds, mean_value_bracket) against exact
+// rational arithmetic that shares no code with it: the ball's exact polynomial is a random
+// choice inside every radius, its values and slopes are computed over Q from the Bernstein
+// form, and a bracket holds the root exactly when the exact signs at its ends say so. The
+// balls are not tuned to the method: degrees 1–40, coefficients over twelve orders of
+// magnitude, monotone and non-monotone pieces, points near and far from the root, points
+// known only up to a blur, values known only up to an error.
+#include <gtest/gtest.h>
+
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "algebra/rational.h"
+#include "render/bernstein_ball.h"
+#include "render/certified_isolation.h"
+
+namespace locus::render {
+namespace {
+
+using algebra::Rational;
+
+// The exact value of a finite double.
+Rational exact(double v) {
+    Rational out;
+    int exponent = 0;
+    const double mantissa = std::frexp(v, &exponent);
+    fmpz_set_d(fmpq_numref(out.get()), std::ldexp(mantissa, 53));
+    fmpz_one(fmpq_denref(out.get()));
+    if (exponent >= 53) {
+        fmpq_mul_2exp(out.get(), out.get(), static_cast<ulong>(exponent - 53));
+    } else {
+        fmpq_div_2exp(out.get(), out.get(), static_cast<ulong>(53 - exponent));
+    }
+    return out;
+}
+
+// Σ c_i·C(m, i)·σ^i·(1 − σ)^(m − i), exactly.
+Rational bernstein_sum(const std::vector<Rational>& c, const Rational& sigma) {
+    const auto m = static_cast<ulong>(c.size() - 1);
+    Rational keep(1), sum, term, power_sigma(1), binomial;
+    fmpq_sub(keep.get(), keep.get(), sigma.get());
+    std::vector<Rational> power_keep(c.size());
+    fmpq_one(power_keep[0].get());
+    for (std::size_t i = 1; i < c.size(); ++i) {
+        fmpq_mul(power_keep[i].get(), power_keep[i - 1].get(), keep.get());
+    }
+    fmpz_t choose;
+    fmpz_init(choose);
+    for (ulong i = 0; i <= m; ++i) {
+        fmpz_bin_uiui(choose, m, i);
+        fmpq_mul(term.get(), c[i].get(), power_sigma.get());
+        fmpq_mul(term.get(), term.get(), power_keep[m - i].get());
+        fmpq_mul_fmpz(term.get(), term.get(), choose);
+        fmpq_add(sum.get(), sum.get(), term.get());
+        fmpq_mul(power_sigma.get(), power_sigma.get(), sigma.get());
+    }
+    fmpz_clear(choose);
+    return sum;
+}
+
+// An exact polynomial inside a ball: its Bernstein coefficients, and those of its derivative.
+struct ExactPiece {
+    std::vector<Rational> value;
+    std::vector<Rational> slope;  // n·(β_{i+1} − β_i)
+};
+
+ExactPiece exact_inside(const BernsteinBall& g, std::mt19937_64& random) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    ExactPiece piece;
+    const int n = g.degree;
+    for (int i = 0; i <= n; ++i) {
+        // A point of [b − r, b + r]: r·x rounds to at most r in magnitude; the ends themselves
+        // now and then.
+        const double x = random() % 8 == 0 ? (random() % 2 == 0 ? 1.0 : -1.0) : unit(random);
+        Rational beta = exact(g.b[i]), offset = exact(g.r[i] * x);
+        fmpq_add(beta.get(), beta.get(), offset.get());
+        piece.value.push_back(beta);
+    }
+    for (int i = 0; i < n; ++i) {
+        Rational d;
+        fmpq_sub(d.get(), piece.value[i + 1].get(), piece.value[i].get());
+        fmpq_mul_si(d.get(), d.get(), n);
+        piece.slope.push_back(d);
+    }
+    return piece;
+}
+
+bool at_most(const Rational& a, double bound) {
+    return fmpq_cmp(a.get(), exact(bound).get()) <= 0;
+}
+
+Rational absolute_difference(const Rational& a, const Rational& b) {
+    Rational d;
+    fmpq_sub(d.get(), a.get(), b.get());
+    fmpq_abs(d.get(), d.get());
+    return d;
+}
+
+// A random ball of degree n: coefficients of random signs (or one sign change, for a single
+// root) over magnitudes 10^±6, radii 0 or up to 10^-3 of the coefficient.
+BernsteinBall random_ball(int n, std::mt19937_64& random, bool one_root) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    BernsteinBall g;
+    g.degree = n;
+    const int change = one_root ? 1 + static_cast<int>(random() % static_cast<unsigned>(n)) : 0;
+    const double first_sign = random() % 2 == 0 ? 1.0 : -1.0;
+    const double spread = random() % 3 == 0 ? 6.0 : 1.0;
+    for (int i = 0; i <= n; ++i) {
+        const double magnitude = std::pow(10.0, spread * unit(random));
+        g.b[i] = one_root ? (i < change ? first_sign : -first_sign) * magnitude *
+                                (0.5 + fraction(random))
+                          : unit(random) * magnitude;
+        // Radii below half the coefficient keep every exact coefficient's sign (one root).
+        g.r[i] = random() % 3 == 0
+                     ? 0.0
+                     : std::abs(g.b[i]) * std::pow(10.0, -3.0 - 12.0 * fraction(random));
+    }
+    return g;
+}
+
+TEST(SlopeBounds, HoldAgainstExactArithmetic) {
+    std::mt19937_64 random(23);
+    std::uniform_real_distribution<double> fraction(0.0, 1.0);
+    int informative = 0;
+    for (int trial = 0; trial < 240; ++trial) {
+        const int n = 1 + trial % 40;
+        const BernsteinBall g = random_ball(n, random, trial % 2 == 0);
+        const ExactPiece piece = exact_inside(g, random);
+        const SlopeBounds bounds = slope_bounds(g);
+        const MidpointPolynomial midpoint(g);
+        std::vector<double> points = {0.0, 1.0};
+        for (int k = 0; k < 4; ++k) {
+            points.push_back(fraction(random));
+        }
+        std::vector<Rational> slopes;
+        for (double sigma : points) {
+            const Rational slope = bernstein_sum(piece.slope, exact(sigma));
+            EXPECT_LE(fmpq_cmp(exact(bounds.hull_lo).get(), slope.get()), 0)
+                << "degree " << n << " σ " << sigma;
+            EXPECT_LE(fmpq_cmp(slope.get(), exact(bounds.hull_hi).get()), 0)
+                << "degree " << n << " σ " << sigma;
+            EXPECT_TRUE(at_most(absolute_difference(slope, exact(midpoint.at(sigma).slope)),
+                                bounds.point_error))
+                << "degree " << n << " σ " << sigma;
+            slopes.push_back(slope);
+        }
+        for (std::size_t a = 0; a < points.size(); ++a) {
+            for (std::size_t b = a + 1; b < points.size(); ++b) {
+                // |G'(a) − G'(b)| ≤ curvature·|a − b|, both sides exact.
+                Rational limit = exact(bounds.curvature);
+                fmpq_mul(limit.get(), limit.get(),
+                         absolute_difference(exact(points[a]), exact(points[b])).get());
+                EXPECT_LE(fmpq_cmp(absolute_difference(slopes[a], slopes[b]).get(), limit.get()), 0)
+                    << "degree " << n;
+            }
+        }
+        // Not vacuous: the point error is far below the slope's scale when the radii are small.
+        double largest = 0.0;
+        for (int i = 0; i < n; ++i) {
+            largest = std::max(largest, std::abs(g.b[i + 1] - g.b[i]));
+        }
+        informative += bounds.point_error < 1e-2 * n * largest ? 1 : 0;
+    }
+    EXPECT_GT(informative, 200);
+}
+
+TEST(MeanValueBracket, HoldsTheRootAndPlacesItFromOneValue) {
+    std::mt19937_64 random(31);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    int tight = 0, trials = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const int n = 1 + trial % 40;
+        const BernsteinBall g = random_ball(n, random, true);
+        const ExactPiece piece = exact_inside(g, random);
+        const int sign_at_zero = g.b[0] > 0.0 ? 1 : -1;
+        const auto sign_at = [&](double sigma) {
+            return fmpq_sgn(bernstein_sum(piece.value, exact(sigma)).get());
+        };
+        // The root to about 1e-15, by bisection on exact signs.
+        double lo = 0.0, hi = 1.0;
+        for (int step = 0; step < 50; ++step) {
+            const double middle = 0.5 * (lo + hi);
+            (sign_at(middle) == sign_at_zero ? lo : hi) = middle;
+        }
+        const double root = 0.5 * (lo + hi);
+        // A point near the root (or far from it), known exactly or only up to a blur, and G
+        // there, rounded, with its rounding error or a larger one.
+        const double distance = std::pow(10.0, -14.0 + 13.0 * fraction(random)) * unit(random);
+        const double s = std::clamp(root + distance, 0.0, 1.0);
+        const double blur = trial % 3 == 0 ? std::abs(distance) * 1e-3 * fraction(random) : 0.0;
+        const double sigma = std::clamp(s + blur * unit(random), 0.0, 1.0);
+        const Rational value = bernstein_sum(piece.value, exact(s));
+        double rounded = fmpq_get_d(value.get());
+        if (trial % 4 == 1) {
+            // Known only roughly: off by up to the whole value, and said to be (the bound a
+            // little above the actual error, which the step must allow for).
+            rounded *= 1.0 + std::pow(10.0, -12.0 * fraction(random)) * unit(random);
+        }
+        const double error = fmpq_get_d(absolute_difference(value, exact(rounded)).get()) *
+                             (1.01 + (trial % 4 == 1 ? 0.5 * fraction(random) : 0.0));
+        const double known_blur = blur > 0.0 ? std::abs(sigma - s) * 1.01 : 0.0;
+        const RootRange range =
+            mean_value_bracket(MidpointPolynomial(g), slope_bounds(g), sign_at_zero, sigma,
+                               known_blur, rounded, error, 0.0, 1.0);
+        ASSERT_LE(range.lo, range.hi);
+        const int at_lo = sign_at(range.lo), at_hi = sign_at(range.hi);
+        EXPECT_TRUE(at_lo == sign_at_zero || at_lo == 0)
+            << "degree " << n << ": [" << range.lo << ", " << range.hi << "] misses the root "
+            << root << " (point " << sigma << ")";
+        EXPECT_TRUE(at_hi == -sign_at_zero || at_hi == 0)
+            << "degree " << n << ": [" << range.lo << ", " << range.hi << "] misses the root "
+            << root << " (point " << sigma << ")";
+        if (std::abs(distance) < 1e-6 && blur == 0.0 && trial % 4 != 1) {
+            ++trials;
+            tight += range.hi - range.lo < 1e-3 * std::abs(distance) + 1e-13 ? 1 : 0;
+        }
+    }
+    // From a point within 1e-6 of the root, known exactly, the bracket is usually a thousand
+    // times narrower than that distance.
+    EXPECT_GT(tight, trials / 2) << tight << " of " << trials;
+}
+
+}  // namespace
+}  // namespace locus::render
