@@ -195,7 +195,10 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
         out.work += work;
     };
     const double a = guess - reach, b = guess + reach;
-    if (g.degree < 1 || !(a > start) || !(b < std::min(end, 1.0)) || !(b > a)) {
+    // A window reaching the end of a search to the end: [a, 1] (a caller that cut its segment
+    // at the window's end, to spare the cut).
+    const bool window_to_end = b >= 1.0 - 0x1.0p-30 && end >= 1.0;
+    if (g.degree < 1 || !(a > start) || !(window_to_end || b < std::min(end, 1.0)) || !(b > a)) {
         // No usable guess: cut at `start`, bisect the rest.
         if (!(start > 0.0)) {
             isolate_into(g, max_depth, end, out);
@@ -236,6 +239,11 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     }
     // The window [a, h], h = a + τ·(1 − a) ≈ b, then [h, 1].
     const double rest = 1.0 - a;
+    if (window_to_end) {
+        isolate_into(after, depth_within(rest), 1.0, out);
+        map_back(a, rest);
+        return out;
+    }
     const double tau = (b - a) / rest;
     BernsteinBall window, beyond;
     split_at(after, tau, window, beyond);

@@ -39,7 +39,8 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end =
 // isolated it). The piece before that window is tested whole first (from 0: one cut when it is
 // certainly of one sign), then the window, then the rest — where bisection from `start` takes
 // a cut for every level down to the root. A wrong guess costs those cuts, never the answer.
-// Without a usable window (not inside (start, min(end, 1)), or NaN) the search is
+// A window reaching 1 (within 2^-30, when `end` is 1) is [a, 1]: one cut in all. Without a
+// usable window (not inside (start, min(end, 1)), or NaN) the search is
 // isolate_first_root's on [start, 1]. The ends of a `one_root` or `undecided` piece are in g's
 // σ and not dyadic: each is within 8u of the exact end of its piece.
 Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double start, double end,

@@ -294,7 +294,17 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
     };
     std::array<Segment, kMaxSegments + 2> stack;
     int top = 0;
-    stack[top++] = {lo, hi, false};
+    // With a guess, the first segment ends where the guess's window does: the root is then found
+    // in the window's piece of one cut, and the ray's rest is only expanded when it is not.
+    const double window_end = guess + guess_reach;
+    const bool cut_at_window =
+        std::isfinite(window_end) && guess > lo && window_end > guess && window_end < hi;
+    if (cut_at_window) {
+        stack[top++] = {window_end, hi, false};
+        stack[top++] = {lo, window_end, false};
+    } else {
+        stack[top++] = {lo, hi, false};
+    }
     int work = 0;
     int segments = 0;
     while (top > 0) {
