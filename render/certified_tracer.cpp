@@ -37,6 +37,17 @@ RootResult hit(double t, int work, Decision decided_by) {
     return r;
 }
 
+// The hint's doubles_rest after a ray: a rest begins when the doubles were tried and a hit took
+// double-double, and counts down while it lasts.
+int next_doubles_rest(const NeighbourHint& before, bool doubles_first, const RootResult& result) {
+    if (!doubles_first) {
+        return before.doubles_rest - 1;
+    }
+    const bool fell_short =
+        result.status == RootStatus::hit && result.decided_by == Decision::double_double;
+    return fell_short ? kDoublesRest : 0;
+}
+
 // max(1, |t|) over [lo, hi]'s smallest magnitude: the scale of the tolerance there.
 double tolerance_scale(double lo, double hi) {
     if (lo <= 0.0 && hi >= 0.0) {
@@ -119,8 +130,8 @@ RootResult CertifiedTracer::exact(const Ray& ray, Interval interval, int work) c
                : hit(root.t, work + 1, Decision::exact);
 }
 
-RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double tolerance,
-                                   int work) const {
+RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double tolerance, int work,
+                                   bool doubles_first) const {
     // Tiers 1–2: the ball itself (in doubles or double-double). A bracket of σ-width w maps
     // to t-width w·(t_hi − t_lo), within m of exact at either end (the two ends' margins, and
     // the rounding of the map).
@@ -169,6 +180,9 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
     };
     using Precision = algebra::CompiledPolynomial::Precision;
     for (const Precision precision : {Precision::double_precision, Precision::double_double}) {
+        if (precision == Precision::double_precision && !doubles_first) {
+            continue;
+        }
         // Set when this precision's error bound exceeds what f reaches near the root
         // (4·|slope|·h, with room for a poor slope): its signs a quarter tolerance from the root
         // cannot be certain, and the pass ends (at degree 30 the doubles' bound often is).
@@ -258,21 +272,25 @@ RootResult CertifiedTracer::first_hit(const Ray& ray, Interval interval, double 
                                       NeighbourHint* hint) const {
     if (hint == nullptr) {
         double unused = 0.0;
-        return search(ray, interval, tolerance, NAN, 0.0, unused);
+        return search(ray, interval, tolerance, NAN, 0.0, true, unused);
     }
     // For the next ray: this one's root, and the half-width of the piece that isolated it (a
     // root found otherwise — exact arithmetic — leaves that of the finest segment piece).
     double reach = 0.0;
-    const RootResult result = search(ray, interval, tolerance, hint->t, hint->reach, reach);
+    const bool doubles_first = hint->doubles_rest == 0;
+    const RootResult result =
+        search(ray, interval, tolerance, hint->t, hint->reach, doubles_first, reach);
     const bool hit = result.status == RootStatus::hit;
     hint->t = hit ? result.t : NAN;
+    hint->doubles_rest = next_doubles_rest(*hint, doubles_first, result);
     hint->reach =
         !hit ? 0.0 : (reach > 0.0 ? reach : std::ldexp(interval.hi - interval.lo, -kSegmentDepth));
     return result;
 }
 
 RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tolerance,
-                                   double guess, double guess_reach, double& piece_reach) const {
+                                   double guess, double guess_reach, bool doubles_first,
+                                   double& piece_reach) const {
     const double lo = interval.lo, hi = interval.hi;
     if (!(hi > lo)) {
         return miss(0);
@@ -363,7 +381,7 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             const Piece piece{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo),
                               t_at(isolation.hi), margin};
             piece_reach = 0.5 * (piece.t_hi - piece.t_lo);
-            return narrow(ray, piece, tolerance, work);
+            return narrow(ray, piece, tolerance, work, doubles_first);
         }
         const double piece_a = std::max(a, t_at(isolation.lo) - margin);
         const double piece_b = std::min(b, t_at(isolation.hi) + margin);
@@ -422,6 +440,7 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     const NeighbourHint guess = next;
     next = NeighbourHint{};
     next.family_failures = guess.family_failures;
+    next.doubles_rest = guess.doubles_rest;
     if (!(interval.hi > interval.lo)) {
         next.family_rest = guess.family_rest;
         return miss(0);
@@ -461,7 +480,9 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
     const auto t_at = [&](double sigma) { return t0 + sigma * width; };
     const Piece found{isolation.piece, isolation.sign_at_lo, t_at(isolation.lo), t_at(isolation.hi),
                       margin};
-    RootResult result = narrow(ray, found, tolerance, isolation.work);
+    const bool doubles_first = guess.doubles_rest == 0;
+    RootResult result = narrow(ray, found, tolerance, isolation.work, doubles_first);
+    next.doubles_rest = next_doubles_rest(guess, doubles_first, result);
     // The piece may reach past the interval: its one root is then the first in the interval
     // only if it comes before the end. A hit placed outside the interval but within the
     // tolerance of an end may be a root just inside it (or, at the start, one the cut's

@@ -48,9 +48,14 @@ inline constexpr double kRenderTolerance = 1e-9;
 // roots) would cost every ray a fruitless search before it is traced alone, so after
 // kFamilyFailuresBeforeRest undecided rays in a row the next kFamilyRest rays of the row are
 // traced alone at once, and then the family is tried again (it may decide elsewhere).
+// And whether roots have needed double-double evaluations: near the next ray's root, a pixel
+// on, the doubles' error bound is likely as far above what the tolerance allows (at degree 30
+// it nearly always is), so after a ray whose doubles fell short the next kDoublesRest rays of
+// the row are narrowed in double-double at once, and then doubles are tried again.
 struct NeighbourHint {
     double t = std::numeric_limits<double>::quiet_NaN();
     double reach = 0.0;
+    int doubles_rest = 0;     // rays still to narrow without evaluating in doubles first
     int family_failures = 0;  // searches of the ball in a row that decided nothing
     int family_rest = 0;      // rays still to trace alone
 };
@@ -59,6 +64,7 @@ inline constexpr int kFamilyFailuresBeforeRest = 8;
 // ray alone.
 inline constexpr int kFamilyDepth = 10;
 inline constexpr int kFamilyRest = 32;
+inline constexpr int kDoublesRest = 16;
 
 class CertifiedTracer {
   public:
@@ -87,12 +93,14 @@ class CertifiedTracer {
     struct Piece;
     // first_hit with the guess (t, NaN for none) and its reach for the first segment's search;
     // `piece_reach` receives the half-width of the piece that isolated a root found by the balls.
+    // `doubles_first`: whether narrow() evaluates in doubles before double-double.
     RootResult search(const Ray& ray, Interval interval, double tolerance, double guess,
-                      double guess_reach, double& piece_reach) const;
+                      double guess_reach, bool doubles_first, double& piece_reach) const;
     RestrictionBall segment_ball(const Ray& ray, double a, double b) const;
     // The same in double-double (LineRestrictor::restrict_with_double_double_bounds).
     RestrictionBall segment_ball_precise(const Ray& ray, double a, double b) const;
-    RootResult narrow(const Ray& ray, const Piece& piece, double tolerance, int work) const;
+    RootResult narrow(const Ray& ray, const Piece& piece, double tolerance, int work,
+                      bool doubles_first = true) const;
     RootResult exact(const Ray& ray, Interval interval, int work) const;
 
     const algebra::CompiledPolynomial* f_;
