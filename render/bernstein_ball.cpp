@@ -47,9 +47,12 @@ namespace {
 // |β_ik| ≤ 1 (x^k lies in [−1, 1]), so converting a ball does not magnify its radii.
 __extension__ using Int128 = __int128;  // GCC's 128-bit integers (not ISO C++)
 
+// Only the first half of the rows is kept: B_i(−x) = B_{n−i}(x), so β_{n−i,k} = (−1)^k·β_ik,
+// and to_bernstein forms coefficients i and n − i together from the even and odd columns.
 struct CenteredWeights {
-    // [n][k·(n + 1) + i]: by column (k), so that to_bernstein adds a coefficient's column to
-    // every output in one contiguous loop; and their magnitudes, for the radii.
+    // [n][k·(n/2 + 1) + i] for i ≤ n/2: by column (k), so that to_bernstein adds a
+    // coefficient's column to every output in one contiguous loop; and their magnitudes, for
+    // the radii.
     std::vector<std::vector<double>> by_degree, magnitudes;
     CenteredWeights() {
         std::array<std::array<long long, kMaxDegree + 1>, kMaxDegree + 1> c{};
@@ -62,17 +65,18 @@ struct CenteredWeights {
         by_degree.resize(kMaxDegree + 1);
         magnitudes.resize(kMaxDegree + 1);
         for (int n = 0; n <= kMaxDegree; ++n) {
+            const int half = n / 2;
             auto& table = by_degree[n];
-            table.assign(static_cast<std::size_t>((n + 1) * (n + 1)), 0.0);
+            table.assign(static_cast<std::size_t>((n + 1) * (half + 1)), 0.0);
             magnitudes[n].assign(table.size(), 0.0);
-            for (int i = 0; i <= n; ++i) {
+            for (int i = 0; i <= half; ++i) {
                 for (int k = 0; k <= n; ++k) {
                     Int128 sum = 0;
                     for (int j = std::max(0, k - (n - i)); j <= std::min(i, k); ++j) {
                         const Int128 term = static_cast<Int128>(c[i][j]) * c[n - i][k - j];
                         sum += (k - j) % 2 == 0 ? term : -term;
                     }
-                    const auto at = static_cast<std::size_t>(k * (n + 1) + i);
+                    const auto at = static_cast<std::size_t>(k * (half + 1) + i);
                     table[at] = static_cast<double>(static_cast<long double>(sum) /
                                                     static_cast<long double>(c[n][k]));
                     magnitudes[n][at] = std::abs(table[at]);
@@ -91,22 +95,25 @@ const CenteredWeights& centered_weights() {
 
 namespace {
 
-// out.b += Σ_k β_·k·c_k and out.r += Σ_k |β_·k|·e_k, column by column: the inner loops run over
-// the outputs, which vector operations do several at a time (a dot product per output would be
-// a chain of dependent additions). AVX2 where the processor has it: a target clone, GCC only.
+// For i ≤ n/2: even[i] += Σ_{k even} β_ik·c_k, odd[i] += Σ_{k odd} β_ik·c_k and
+// radii[i] += Σ_k |β_ik|·e_k, column by column: the inner loops run over the outputs, which
+// vector operations do several at a time (a dot product per output would be a chain of
+// dependent additions). AVX2 where the processor has it: a target clone, GCC only.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 void add_columns(int n, const double* weights, const double* magnitudes, const double* values,
-                 const double* errors, double* out_values, double* out_radii) {
+                 const double* errors, double* even, double* odd, double* radii) {
     const auto size = static_cast<std::size_t>(n + 1);
+    const auto rows = static_cast<std::size_t>(n / 2 + 1);
     for (std::size_t k = 0; k < size; ++k) {
         const double c = values[k], e = errors[k];
-        const double* column = weights + k * size;
-        const double* column_magnitude = magnitudes + k * size;
-        for (std::size_t i = 0; i < size; ++i) {
-            out_values[i] += column[i] * c;
-            out_radii[i] += column_magnitude[i] * e;
+        const double* column = weights + k * rows;
+        const double* column_magnitude = magnitudes + k * rows;
+        double* target = k % 2 == 0 ? even : odd;
+        for (std::size_t i = 0; i < rows; ++i) {
+            target[i] += column[i] * c;
+            radii[i] += column_magnitude[i] * e;
         }
     }
 }
@@ -121,20 +128,24 @@ BernsteinBall to_bernstein(const RestrictionBall& g) {
         return out;
     }
     const auto& weights = centered_weights();
-    // Every term meets at most n + 4 roundings: the weight's (and the long double quotient's),
-    // the product, the running sum (in any order).
-    const double rounding = gamma(n + 4);
+    // Every term meets at most n + 5 roundings: the weight's (and the long double quotient's),
+    // the product, the running sum (in any order), and the even and odd parts' sum.
+    const double rounding = gamma(n + 5);
     std::array<double, kMaxDegree + 1> errors{};
     for (int k = 0; k <= n; ++k) {
         errors[k] = g.radius[k] + rounding * std::abs(g.polynomial.c[k]);
     }
-    std::fill_n(out.b.begin(), n + 1, 0.0);
-    std::fill_n(out.r.begin(), n + 1, 0.0);
+    const int half = n / 2;
+    std::array<double, kMaxDegree / 2 + 1> even{}, odd{}, radii{};
     add_columns(n, weights.by_degree[static_cast<std::size_t>(n)].data(),
                 weights.magnitudes[static_cast<std::size_t>(n)].data(), g.polynomial.c.data(),
-                errors.data(), out.b.data(), out.r.data());
-    for (int i = 0; i <= n; ++i) {
-        out.r[i] = out.r[i] * (1.0 + 2.0 * rounding) + kUnderflow;
+                errors.data(), even.data(), odd.data(), radii.data());
+    for (int i = 0; i <= half; ++i) {
+        const double radius = radii[i] * (1.0 + 2.0 * rounding) + kUnderflow;
+        // b_{n−i} = Σ_k (−1)^k β_ik c_k; at i = n/2 (n even) the odd part is 0 exactly.
+        out.b[i] = even[i] + odd[i];
+        out.b[n - i] = even[i] - odd[i];
+        out.r[i] = out.r[n - i] = radius;
     }
     return out;
 }
@@ -319,18 +330,17 @@ ValueSlope MidpointPolynomial::at(double sigma) const {
     // (((w_n σ + w_{n−1} s) σ + w_{n−2} s²) σ + …, s = 1 − σ): no division and no branch, and
     // every weight positive. The derivative n·Σ (b_{i+1} − b_i) C(n − 1, i) σ^i s^(n − 1 − i)
     // the same way.
+    // Both in one loop: the value's step i and the slope's step i − 1 take the same power
+    // s^(n−i), each formed as before (the same roundings, so the same results).
     const double s = 1.0 - sigma;
-    double value = value_[n], power = 1.0;
-    for (int i = n - 1; i >= 0; --i) {
+    double value = value_[n], slope = slope_[n - 1], power = 1.0;
+    for (int i = n - 1; i >= 1; --i) {
         power *= s;
         value = value * sigma + value_[i] * power;
+        slope = slope * sigma + slope_[i - 1] * power;
     }
-    double slope = slope_[n - 1];
-    power = 1.0;
-    for (int i = n - 2; i >= 0; --i) {
-        power *= s;
-        slope = slope * sigma + slope_[i] * power;
-    }
+    power *= s;
+    value = value * sigma + value_[0] * power;
     out.value = value;
     out.slope = n * slope;
     return out;

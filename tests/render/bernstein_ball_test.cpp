@@ -1,8 +1,9 @@
-// The mean-value step of the certified tracer (slope_bounds, mean_value_bracket) against exact
-// rational arithmetic that shares no code with it: the ball's exact polynomial is a random
-// choice inside every radius, its values and slopes are computed over Q from the Bernstein
-// form, and a bracket holds the root exactly when the exact signs at its ends say so. The
-// balls are not tuned to the method: degrees 1–40, coefficients over twelve orders of
+// Bernstein balls against exact rational arithmetic that shares no code with them: the
+// conversion from the power basis (to_bernstein), and the mean-value step of the certified
+// tracer (slope_bounds, mean_value_bracket). A ball's exact polynomial is a random choice
+// inside every radius; its coefficients, values and slopes are computed over Q by another
+// route, and a bracket holds the root exactly when the exact signs at its ends say so. The
+// balls are not tuned to the method: degrees up to 40, coefficients over twelve orders of
 // magnitude, monotone and non-monotone pieces, points near and far from the root, points
 // known only up to a blur, values known only up to an error.
 #include <gtest/gtest.h>
@@ -120,6 +121,65 @@ BernsteinBall random_ball(int n, std::mt19937_64& random, bool one_root) {
                      : std::abs(g.b[i]) * std::pow(10.0, -3.0 - 12.0 * fraction(random));
     }
     return g;
+}
+
+// The exact polynomial Σ c_k x^k for a choice inside every radius, carried to σ = (1 + x)/2
+// by expanding (2σ − 1)^k and then to the Bernstein basis by b_i = Σ_{j ≤ i} C(i, j)/C(n, j)·a_j
+// (Farouki & Rajan 1987) — not the conversion's own formula, the centred weights β_ik —
+// against every coefficient's ball.
+TEST(BernsteinConversion, RadiiHoldAgainstExactArithmetic) {
+    std::mt19937_64 random(41);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    fmpz_t choose, other;
+    fmpz_init(choose);
+    fmpz_init(other);
+    for (int trial = 0; trial < 164; ++trial) {
+        const int n = trial % 41;
+        RestrictionBall power;
+        power.polynomial.degree = n;
+        power.certified = true;
+        const double spread = trial % 2 == 0 ? 6.0 : 1.0;
+        for (int k = 0; k <= n; ++k) {
+            power.polynomial.c[k] = unit(random) * std::pow(10.0, spread * unit(random));
+            power.radius[k] = random() % 3 == 0 ? 0.0
+                                                : std::abs(power.polynomial.c[k]) *
+                                                      std::pow(10.0, -16.0 * fraction(random));
+        }
+        const BernsteinBall ball = to_bernstein(power);
+        ASSERT_EQ(ball.degree, n);
+        // c' inside the balls, then a_j = Σ_k c'_k·C(k, j)·2^j·(−1)^(k − j).
+        std::vector<Rational> a(static_cast<std::size_t>(n + 1));
+        for (int k = 0; k <= n; ++k) {
+            Rational c = exact(power.polynomial.c[k]);
+            fmpq_add(c.get(), c.get(), exact(power.radius[k] * unit(random)).get());
+            for (int j = 0; j <= k; ++j) {
+                fmpz_bin_uiui(choose, static_cast<ulong>(k), static_cast<ulong>(j));
+                Rational term;
+                fmpq_mul_fmpz(term.get(), c.get(), choose);
+                fmpq_mul_2exp(term.get(), term.get(), static_cast<ulong>(j));
+                if ((k - j) % 2 != 0) {
+                    fmpq_neg(term.get(), term.get());
+                }
+                fmpq_add(a[static_cast<std::size_t>(j)].get(), a[static_cast<std::size_t>(j)].get(),
+                         term.get());
+            }
+        }
+        for (int i = 0; i <= n; ++i) {
+            Rational b;
+            for (int j = 0; j <= i; ++j) {
+                fmpz_bin_uiui(choose, static_cast<ulong>(i), static_cast<ulong>(j));
+                fmpz_bin_uiui(other, static_cast<ulong>(n), static_cast<ulong>(j));
+                Rational term;
+                fmpq_mul_fmpz(term.get(), a[static_cast<std::size_t>(j)].get(), choose);
+                fmpq_div_fmpz(term.get(), term.get(), other);
+                fmpq_add(b.get(), b.get(), term.get());
+            }
+            EXPECT_TRUE(at_most(absolute_difference(b, exact(ball.b[i])), ball.r[i]))
+                << "degree " << n << ", coefficient " << i;
+        }
+    }
+    fmpz_clear(choose);
+    fmpz_clear(other);
 }
 
 TEST(SlopeBounds, HoldAgainstExactArithmetic) {
