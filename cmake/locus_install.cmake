@@ -1,5 +1,5 @@
 # `cmake --install` (and `make install PREFIX=...`): the `locus` executable, the OpenImageIO
-# module beside it in lib/locus (found from the executable's path, so a moved tree still
+# and HTTP modules beside it in lib/locus (found from the executable's path, so a moved tree still
 # works: render/image_output.cpp), the library headers under include/locus, CMake package files
 # for find_package(locus) with the targets locus::algebra, locus::implicit, locus::render, the
 # docs and the example scenes and parametrizations.
@@ -12,7 +12,7 @@ set(locus_exported_targets locus_algebra locus_implicit locus_render locus_flint
 if(LOCUS_SANITIZE)
     list(APPEND locus_exported_targets locus_image_file)  # linked in, not a module (render/)
 else()
-    install(TARGETS locus_image_file LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/locus)
+    install(TARGETS locus_image_file locus_http LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/locus)
 endif()
 install(TARGETS locus RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ${locus_exported_targets} EXPORT locusTargets

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <iterator>
 
-#include <dlfcn.h>
 #include <unistd.h>  // for access
 
 #include "algebra/error.h"
 #include "render/detail/plain_image_file.h"
+#include "render/loadable_module.h"
 #include "render/shading.h"
 
 #ifdef LOCUS_IMAGE_LINKED
@@ -31,43 +31,11 @@ WriteFunction image_writer() {
     return &locus_write_image_file;
 }
 #else
-// Where the OpenImageIO module may be, in order: beside an installed executable
-// (PREFIX/bin/locus and PREFIX/lib/locus/), in the build tree (build/cli/locus and
-// build/render/), both found from the executable's own path so that a moved tree still works;
-// then where this build put it (test executables elsewhere in the build tree).
-std::vector<std::string> image_module_candidates() {
-    const char* const name = "liblocus_image_file.so";
-    std::vector<std::string> candidates;
-    std::error_code failure;
-    const std::filesystem::path executable =
-        std::filesystem::read_symlink("/proc/self/exe", failure);
-    if (!failure) {
-        const std::filesystem::path prefix = executable.parent_path().parent_path();
-        candidates.push_back((prefix / "lib" / "locus" / name).string());
-        candidates.push_back((prefix / "render" / name).string());
-    }
-    candidates.emplace_back(LOCUS_IMAGE_MODULE);
-    return candidates;
-}
-
 // The OpenImageIO module (render/image_file_module.cpp), loaded once on first use.
 WriteFunction image_writer() {
-    static const WriteFunction writer = [] {
-        std::string errors;
-        for (const std::string& candidate : image_module_candidates()) {
-            if (void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-                return reinterpret_cast<WriteFunction>(dlsym(module, "locus_write_image_file"));
-            }
-            errors += std::string("\n  ") + dlerror();
-        }
-        throw Error(
-            "cannot load the image writer module (needed for every format but 8-bit PNG "
-            "and PPM):" +
-            errors);
-    }();
-    if (writer == nullptr) {
-        throw Error("the image writer module lacks locus_write_image_file");
-    }
+    static const WriteFunction writer = reinterpret_cast<WriteFunction>(module_symbol(
+        "liblocus_image_file.so", "render", LOCUS_IMAGE_MODULE, "locus_write_image_file",
+        "image writer (needed for every format but 8-bit PNG and PPM)"));
     return writer;
 }
 #endif

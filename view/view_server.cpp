@@ -1,7 +1,5 @@
 #include "view/view_server.h"
 
-#include <httplib.h>
-
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -24,6 +22,7 @@
 #include "render/trace_method.h"
 #include "view/assets.h"
 #include "view/frame_builder.h"
+#include "view/http_server.h"
 
 namespace locus::view {
 namespace {
@@ -65,13 +64,13 @@ std::string number(double v) {
     return text;
 }
 
-void send_json(httplib::Response& response, int status, const std::string& body) {
+void send_json(HttpResponse& response, int status, const std::string& body) {
     response.status = status;
     response.set_header("Cache-Control", "no-store");
     response.set_content(body, "application/json");
 }
 
-void send_error(httplib::Response& response, int status, const std::string& message,
+void send_error(HttpResponse& response, int status, const std::string& message,
                 const std::string& field = {}, std::size_t line = 0, std::size_t column = 0) {
     std::string body = "{\"error\":" + json_string(message);
     if (!field.empty()) {
@@ -83,7 +82,7 @@ void send_error(httplib::Response& response, int status, const std::string& mess
     send_json(response, status, body + "}");
 }
 
-Fields fields_of(const httplib::Request& request) {
+Fields fields_of(const HttpRequest& request) {
     Fields fields;
     for (const auto& [name, value] : request.params) {
         fields.emplace(name, value);
@@ -100,7 +99,7 @@ std::string camera_text(const render::CameraSpec& c) {
 
 // Runs `work`, turning every error into an answer: a page's request never stops the server.
 template <class Work>
-void answer(httplib::Response& response, Work&& work) {
+void answer(HttpResponse& response, Work&& work) {
     try {
         work();
     } catch (const RequestError& e) {
@@ -129,7 +128,7 @@ struct ViewServer::State {
 
     ViewOptions options;
     FrameBuilder builder;
-    httplib::Server server;
+    std::unique_ptr<HttpServer> server;
     int port = 0;
 
     // One render at a time per client: a newer request cancels the one in flight.
@@ -191,7 +190,7 @@ struct ViewServer::State {
 
     // answer() within a render slot; 503 when the line is full.
     template <class Work>
-    void answer_in_slot(httplib::Response& response, Work&& work) {
+    void answer_in_slot(HttpResponse& response, Work&& work) {
         if (!acquire_slot()) {
             send_error(response, 503, "busy: too many requests waiting");
             return;
@@ -207,7 +206,7 @@ struct ViewServer::State {
     // `client` field) cancels it, the server's stop cancels every one, and it waits for its
     // client's previous work to end and for a render slot. `work` gets the cancellation flag.
     template <class Work>
-    void client_work(const Fields& fields, httplib::Response& response, Work&& work) {
+    void client_work(const Fields& fields, HttpResponse& response, Work&& work) {
         const std::string client_id = field(fields, "client").value_or("");
         std::shared_ptr<Client> client;
         auto cancel = std::make_shared<std::atomic<bool>>(false);
@@ -265,7 +264,7 @@ struct ViewServer::State {
         slot_freed.notify_all();
     }
 
-    void handle_render(const httplib::Request& request, httplib::Response& response) {
+    void handle_render(const HttpRequest& request, HttpResponse& response) {
         const Fields fields = fields_of(request);
         client_work(fields, response, [&](const std::atomic<bool>* cancel) {
             const Frame frame = builder.build(fields);
@@ -284,7 +283,7 @@ struct ViewServer::State {
 
     // The frame's rays by the requested method against the certified one: pixels that one hits
     // and the other misses, or whose distances differ by more than 1e-6 relative.
-    void handle_check(const httplib::Request& request, httplib::Response& response) {
+    void handle_check(const HttpRequest& request, HttpResponse& response) {
         const Fields fields = fields_of(request);
         client_work(fields, response, [&](const std::atomic<bool>* cancel) {
             Frame frame = builder.build(fields);
@@ -314,7 +313,7 @@ struct ViewServer::State {
     }
 
     // The point under pixel (x, y): the frame's depth there along the pixel's ray.
-    void handle_pick(const httplib::Request& request, httplib::Response& response) {
+    void handle_pick(const HttpRequest& request, HttpResponse& response) {
         const Fields fields = fields_of(request);
         client_work(fields, response, [&](const std::atomic<bool>* cancel) {
             Frame frame = builder.build(fields);
@@ -348,9 +347,9 @@ struct ViewServer::State {
         });
     }
 
-    void handle_parse(const httplib::Request& request, httplib::Response& response) {
+    void handle_parse(const HttpRequest& request, HttpResponse& response) {
         answer(response, [&] {
-            const std::string equation = request.get_param_value("equation");
+            const std::string equation = request.param("equation");
             if (equation.size() > options.limits.max_equation_chars) {
                 throw RequestError{"equation: longer than " +
                                        std::to_string(options.limits.max_equation_chars) +
@@ -368,9 +367,9 @@ struct ViewServer::State {
         });
     }
 
-    void handle_implicitize(const httplib::Request& request, httplib::Response& response) {
+    void handle_implicitize(const HttpRequest& request, HttpResponse& response) {
         answer_in_slot(response, [&] {
-            const std::string text = request.get_param_value("param");
+            const std::string text = request.param("param");
             const implicit::Parametrization map = implicit::parse_parametrization(text);
             if (map.coordinates.size() != 3 || map.parameter_ring->num_vars() != 2) {
                 throw RequestError{"param: a surface needs two parameters and x, y, z", "param"};
@@ -391,7 +390,7 @@ struct ViewServer::State {
         });
     }
 
-    void handle_startup(httplib::Response& response) {
+    void handle_startup(HttpResponse& response) {
         std::string methods;
         for (const render::TraceMethod m : render::all_trace_methods()) {
             if (!methods.empty()) {
@@ -413,51 +412,42 @@ struct ViewServer::State {
     }
 
     void routes() {
-        server.set_payload_max_length(options.limits.max_body_bytes);
-        // Frames are small and interactive: no Nagle delay on the answers.
-        server.set_tcp_nodelay(true);
+        HttpServerSettings settings;
+        settings.max_body_bytes = options.limits.max_body_bytes;
         // Threads for every render and waiting render and some to spare, so that the page and
         // the 503 answers are never stuck behind renders (httplib's default was 8 here).
-        const int threads = options.limits.concurrent_renders + options.limits.waiting_renders + 6;
-        server.new_task_queue = [threads] {
-            return new httplib::ThreadPool(static_cast<std::size_t>(threads));
-        };
-        server.Get("/", [](const httplib::Request&, httplib::Response& r) {
+        settings.threads = options.limits.concurrent_renders + options.limits.waiting_renders + 6;
+        server = make_http_server(settings);
+        server->get("/", [](const HttpRequest&, HttpResponse& r) {
             r.set_content(std::string(assets::index_html), "text/html; charset=utf-8");
         });
-        server.Get("/app.js", [](const httplib::Request&, httplib::Response& r) {
+        server->get("/app.js", [](const HttpRequest&, HttpResponse& r) {
             r.set_content(std::string(assets::app_js), "text/javascript; charset=utf-8");
         });
-        server.Get("/style.css", [](const httplib::Request&, httplib::Response& r) {
+        server->get("/style.css", [](const HttpRequest&, HttpResponse& r) {
             r.set_content(std::string(assets::style_css), "text/css; charset=utf-8");
         });
-        server.Get("/api/startup",
-                   [this](const httplib::Request&, httplib::Response& r) { handle_startup(r); });
-        server.Post("/api/parse", [this](const httplib::Request& q, httplib::Response& r) {
-            handle_parse(q, r);
-        });
-        server.Post("/api/render", [this](const httplib::Request& q, httplib::Response& r) {
-            handle_render(q, r);
-        });
-        server.Post("/api/check", [this](const httplib::Request& q, httplib::Response& r) {
-            handle_check(q, r);
-        });
-        server.Post("/api/pick",
-                    [this](const httplib::Request& q, httplib::Response& r) { handle_pick(q, r); });
-        server.Post("/api/implicitize", [this](const httplib::Request& q, httplib::Response& r) {
-            handle_implicitize(q, r);
-        });
+        server->get("/api/startup",
+                    [this](const HttpRequest&, HttpResponse& r) { handle_startup(r); });
+        server->post("/api/parse",
+                     [this](const HttpRequest& q, HttpResponse& r) { handle_parse(q, r); });
+        server->post("/api/render",
+                     [this](const HttpRequest& q, HttpResponse& r) { handle_render(q, r); });
+        server->post("/api/check",
+                     [this](const HttpRequest& q, HttpResponse& r) { handle_check(q, r); });
+        server->post("/api/pick",
+                     [this](const HttpRequest& q, HttpResponse& r) { handle_pick(q, r); });
+        server->post("/api/implicitize",
+                     [this](const HttpRequest& q, HttpResponse& r) { handle_implicitize(q, r); });
         // Anything else, and errors httplib answers itself (413 for a body past the limit).
-        server.set_error_handler([](const httplib::Request&, httplib::Response& r) {
+        server->on_error([](const HttpRequest&, HttpResponse& r) {
             if (r.body.empty()) {
                 send_error(r, r.status,
                            r.status == 413 ? "request too large" : "no such page or method");
             }
         });
-        server.set_exception_handler(
-            [](const httplib::Request&, httplib::Response& r, std::exception_ptr) {
-                send_error(r, 500, "internal error");
-            });
+        server->on_exception(
+            [](const HttpRequest&, HttpResponse& r) { send_error(r, 500, "internal error"); });
     }
 };
 
@@ -471,11 +461,7 @@ ViewServer::~ViewServer() {
 
 int ViewServer::bind() {
     State& s = *state_;
-    if (s.options.port == 0) {
-        s.port = s.server.bind_to_any_port(s.options.host);
-    } else {
-        s.port = s.server.bind_to_port(s.options.host, s.options.port) ? s.options.port : -1;
-    }
+    s.port = s.server->bind(s.options.host, s.options.port);
     if (s.port <= 0) {
         throw Error("cannot listen on " + s.options.host + ":" + std::to_string(s.options.port) +
                     " (in use, or not an address of this machine)");
@@ -487,7 +473,7 @@ void ViewServer::run() {
     State& s = *state_;
     s.run_started = true;
     if (!s.stop_requested) {
-        s.server.listen_after_bind();
+        s.server->listen_after_bind();
     }
     s.run_done = true;
 }
@@ -499,8 +485,8 @@ void ViewServer::stop() {
     // httplib's stop() only acts once the server listens: wait for that (or for run() to end,
     // or never to be called) rather than lose a stop that came early.
     for (int i = 0; i < 5000; ++i) {
-        if (s.server.is_running()) {
-            s.server.stop();
+        if (s.server->is_running()) {
+            s.server->stop();
             return;
         }
         if (!s.run_started || s.run_done) {

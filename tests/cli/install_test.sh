@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `cmake --install` into a temporary prefix, the tree moved elsewhere: the moved `locus` must
 # render a PNG (no module) and an EXR (the OpenImageIO module, found from the executable's own
-# path and not from the build tree), print its version, and a small program must build against
+# path and not from the build tree), serve `locus view` (the HTTP module, found the same way), print its version, and a small program must build against
 # the installed headers and CMake package (find_package(locus)) and run.
 # Usage: tests/cli/install_test.sh BUILD_DIR [sanitized]   (from the source root, as ctest does;
 # `sanitized`: the module is linked in, not installed, under the sanitizers: render/CMakeLists.txt)
@@ -30,6 +30,15 @@ fi
 expect "the moved locus renders an EXR with its own module" 0 "$module_loaded" -- \
     env LD_DEBUG=files "$locus" render "$sphere" --size 16x16 -o "$tmp/s.exr"
 expect "the EXR exists" 0 "" -- test -s "$tmp/s.exr"
+# `locus view` loads its HTTP server (cpp-httplib, OpenSSL) as a module, from the moved tree too.
+view_loaded="file=$tmp/moved/lib/locus/liblocus_http.so"
+if [[ "$sanitized" == sanitized ]]; then
+    view_loaded="serving on http://127.0.0.1:"
+fi
+expect "the moved locus serves with its own HTTP module" 0 "$view_loaded" -- \
+    env LD_DEBUG=files "$locus" view "$sphere" --port 0 --timeout 0.5
+expect "locus itself needs neither cpp-httplib nor OpenSSL" 1 "" -- \
+    bash -c "ldd '$locus' | grep -E 'libcpp-httplib|libssl|libcrypto'"
 expect "--version names the libraries" 0 "FLINT " -- "$locus" --version
 expect "docs and examples are installed" 0 "" -- \
     test -s "$tmp/moved/share/doc/locus/user-guide.md" -a -s "$tmp/moved/share/locus/scenes/twisted_torus.toml" \
