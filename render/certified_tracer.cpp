@@ -325,14 +325,19 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
     }
     int work = 0;
     int segments = 0;
+    bool doubles_at_floor = false;
     while (top > 0) {
         const Segment segment = stack[--top];
         if (++segments > kMaxSegments) {
             return exact(ray, interval, work);
         }
         const double a = segment.a, b = segment.b;
+        // A ray whose doubles have reached their floor somewhere (below) is expanded in
+        // double-double from then on: its later segments are the rest of the same stretch, where
+        // the doubles would only cut off a sliver each time before the segments run out.
+        const bool precise = segment.precise || doubles_at_floor;
         const RestrictionBall power =
-            segment.precise ? segment_ball_precise(ray, a, b) : segment_ball(ray, a, b);
+            precise ? segment_ball_precise(ray, a, b) : segment_ball(ray, a, b);
         if (!power.certified) {
             // Overflow over a very long segment: bound the roots first (Cauchy's bound on the
             // restriction about a, when its leading coefficient is certainly not zero).
@@ -357,6 +362,16 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             }
             return exact(ray, interval, work);
         }
+        // Expanding about a narrower piece shrinks the radii of the powers of t (they scale
+        // with the piece's width), not the constant term's: the rounding of f at the middle,
+        // u·Σ|terms| there. Once that floor is most of the radius (degree 34 and up, near
+        // |x| = 1), doubles cannot decide however narrow the piece: when such a segment leaves
+        // a piece undecided, every later segment of the ray is expanded in double-double.
+        double power_radii = 0.0;
+        for (int k = 1; k <= power.polynomial.degree; ++k) {
+            power_radii += power.radius[k];
+        }
+        const bool at_floor = !precise && !(power_radii > power.radius[0]);
         const BernsteinBall ball = to_bernstein(power);
         // The first segment is searched near the previous ray's root first: on a row of a
         // degree-30 frame that skips the bisection down to the first root (a third of the
@@ -383,6 +398,7 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             piece_reach = 0.5 * (piece.t_hi - piece.t_lo);
             return narrow(ray, piece, tolerance, work, doubles_first);
         }
+        doubles_at_floor = doubles_at_floor || at_floor;
         const double piece_a = std::max(a, t_at(isolation.lo) - margin);
         const double piece_b = std::min(b, t_at(isolation.hi) + margin);
         const double rest_a = std::max(a, t_at(isolation.hi) - margin);
@@ -399,9 +415,9 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             if (!(piece_b > lo && piece_b < hi)) {
                 return exact(ray, interval, work);
             }
-            if (!segment.precise) {
+            if (!precise) {
                 if (piece_b < b) {
-                    stack[top++] = {piece_b, b, false};
+                    stack[top++] = {piece_b, b, doubles_at_floor};
                 }
                 stack[top++] = {lo, piece_b, true};
                 continue;
@@ -421,13 +437,13 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
         // above F's values throughout) is expanded again in double-double, and what that
         // cannot decide goes to exact arithmetic.
         const bool shrinks = piece_b - piece_a < 0.5 * (b - a);
-        if (!shrinks && segment.precise) {
+        if (!shrinks && precise) {
             return exact(ray, interval, work);
         }
         if (isolation.hi < 1.0) {
-            stack[top++] = {rest_a, b, segment.precise};
+            stack[top++] = {rest_a, b, precise};
         }
-        stack[top++] = {piece_a, piece_b, segment.precise || !shrinks};
+        stack[top++] = {piece_a, piece_b, precise || !shrinks};
     }
     return miss(work);
 }
