@@ -22,7 +22,7 @@ namespace locus::algebra {
 class Polynomial;
 
 // The compiled form evaluates with fixed-size power tables; higher degrees are refused.
-inline constexpr int kMaxCompiledDegree = 40;
+inline constexpr int kMaxCompiledDegree = 64;
 
 using Point3 = std::array<double, 3>;
 

@@ -21,7 +21,7 @@
 namespace locus::render {
 
 // Highest degree a restriction may have. Fixed so that per-ray scratch space is a stack array.
-inline constexpr int kMaxDegree = 40;
+inline constexpr int kMaxDegree = 64;
 
 // F(t) = Σ c[k]·t^k with double coefficients; degree −1 is the zero polynomial.
 struct RayPolynomial {

@@ -3,7 +3,7 @@
 // tracer (slope_bounds, mean_value_bracket). A ball's exact polynomial is a random choice
 // inside every radius; its coefficients, values and slopes are computed over Q by another
 // route, and a bracket holds the root exactly when the exact signs at its ends say so. The
-// balls are not tuned to the method: degrees up to 40, coefficients over twelve orders of
+// balls are not tuned to the method: degrees up to 64, coefficients over twelve orders of
 // magnitude, monotone and non-monotone pieces, points near and far from the root, points
 // known only up to a blur, values known only up to an error.
 #include <gtest/gtest.h>
@@ -133,8 +133,8 @@ TEST(BernsteinConversion, RadiiHoldAgainstExactArithmetic) {
     fmpz_t choose, other;
     fmpz_init(choose);
     fmpz_init(other);
-    for (int trial = 0; trial < 164; ++trial) {
-        const int n = trial % 41;
+    for (int trial = 0; trial < 260; ++trial) {
+        const int n = trial % 65;
         RestrictionBall power;
         power.polynomial.degree = n;
         power.certified = true;
@@ -187,7 +187,7 @@ TEST(SlopeBounds, HoldAgainstExactArithmetic) {
     std::uniform_real_distribution<double> fraction(0.0, 1.0);
     int informative = 0;
     for (int trial = 0; trial < 240; ++trial) {
-        const int n = 1 + trial % 40;
+        const int n = 1 + trial % 64;
         const BernsteinBall g = random_ball(n, random, trial % 2 == 0);
         const ExactPiece piece = exact_inside(g, random);
         const SlopeBounds bounds = slope_bounds(g);
@@ -233,7 +233,7 @@ TEST(MeanValueBracket, HoldsTheRootAndPlacesItFromOneValue) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
     int tight = 0, trials = 0;
     for (int trial = 0; trial < 400; ++trial) {
-        const int n = 1 + trial % 40;
+        const int n = 1 + trial % 64;
         const BernsteinBall g = random_ball(n, random, true);
         const ExactPiece piece = exact_inside(g, random);
         const int sign_at_zero = g.b[0] > 0.0 ? 1 : -1;
