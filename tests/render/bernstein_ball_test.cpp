@@ -1,4 +1,5 @@
-// Bernstein balls against exact rational arithmetic that shares no code with them: the
+// Bernstein balls against exact rational arithmetic (and brute force) that share no code with
+// them: de Casteljau's splits, the midpoint polynomial, Descartes' bound under uncertainty, the
 // conversion from the power basis (to_bernstein), and the mean-value step of the certified
 // tracer (slope_bounds, mean_value_bracket). A ball's exact polynomial is a random choice
 // inside every radius; its coefficients, values and slopes are computed over Q by another
@@ -11,6 +12,7 @@
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -121,6 +123,163 @@ BernsteinBall random_ball(int n, std::mt19937_64& random, bool one_root) {
                      : std::abs(g.b[i]) * std::pow(10.0, -3.0 - 12.0 * fraction(random));
     }
     return g;
+}
+
+// De Casteljau may write a piece over the ball it splits (the isolation's stack relies on it).
+TEST(BernsteinSplit, MayWriteOverItsInput) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        BernsteinBall whole;
+        whole.degree = trial % 24;  // the unrolled kernels (1–12) and the generic one
+        for (int i = 0; i <= whole.degree; ++i) {
+            whole.b[i] = unit(random) * std::pow(10.0, 3.0 * unit(random));
+            whole.r[i] = std::abs(whole.b[i]) * 1e-12 * (1.0 + unit(random));
+        }
+        const double tau = trial % 3 == 0 ? 0.5 : 0.5 + 0.49 * unit(random);
+        BernsteinBall left, right;
+        split_at(whole, tau, left, right);
+        BernsteinBall over_left = whole, over_right = whole;
+        BernsteinBall other_left, other_right;
+        split_at(over_left, tau, over_left, other_right);
+        split_at(over_right, tau, other_left, over_right);
+        for (int i = 0; i <= whole.degree; ++i) {
+            EXPECT_EQ(over_left.b[i], left.b[i]);
+            EXPECT_EQ(over_left.r[i], left.r[i]);
+            EXPECT_EQ(over_right.b[i], right.b[i]);
+            EXPECT_EQ(over_right.r[i], right.r[i]);
+        }
+    }
+}
+
+// The radii of de Casteljau's scheme against the scheme in exact rationals (FLINT), shares no
+// code with it: every computed coefficient of both pieces, and every value, within its radius
+// of the exact one — at degrees up to 64, cuts on both sides of 1/2, coefficients of mixed
+// magnitudes.
+TEST(BernsteinSplit, RadiiHoldAgainstExactArithmetic) {
+    std::mt19937_64 random(17);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    const auto within = [&](const algebra::Rational& truth, double value, double radius) {
+        return at_most(absolute_difference(truth, exact(value)), radius);
+    };
+    for (int trial = 0; trial < 195; ++trial) {
+        BernsteinBall whole;
+        whole.degree = trial % 65;
+        const int n = whole.degree;
+        for (int i = 0; i <= n; ++i) {
+            whole.b[i] = unit(random) * std::pow(10.0, 6.0 * unit(random));
+            whole.r[i] = 0.0;
+        }
+        const double tau = trial % 4 == 0 ? 0.5 : fraction(random) * 0.98 + 0.01;
+        BernsteinBall left, right;
+        split_at(whole, tau, left, right);
+        // Exact de Casteljau with the double τ read exactly.
+        std::vector<algebra::Rational> row(static_cast<std::size_t>(n + 1));
+        algebra::Rational t = exact(tau), keep(1), a, b;
+        fmpq_sub(keep.get(), keep.get(), t.get());
+        for (int i = 0; i <= n; ++i) {
+            row[static_cast<std::size_t>(i)] = exact(whole.b[i]);
+        }
+        EXPECT_TRUE(within(row[0], left.b[0], left.r[0]));
+        EXPECT_TRUE(within(row[static_cast<std::size_t>(n)], right.b[n], right.r[n]));
+        for (int level = 1; level <= n; ++level) {
+            for (int i = 0; i <= n - level; ++i) {
+                const auto k = static_cast<std::size_t>(i);
+                fmpq_mul(a.get(), keep.get(), row[k].get());
+                fmpq_mul(b.get(), t.get(), row[k + 1].get());
+                fmpq_add(row[k].get(), a.get(), b.get());
+            }
+            EXPECT_TRUE(within(row[0], left.b[level], left.r[level]))
+                << "degree " << n << ", τ " << tau << ", left " << level;
+            EXPECT_TRUE(within(row[static_cast<std::size_t>(n - level)], right.b[n - level],
+                               right.r[n - level]))
+                << "degree " << n << ", τ " << tau << ", right " << n - level;
+        }
+        // The value at τ is the shared vertex: evaluate() must enclose it too.
+        const BallValue value = evaluate(whole, tau);
+        EXPECT_TRUE(within(row[0], value.value, value.radius)) << "degree " << n;
+    }
+}
+
+// The prepared midpoint polynomial (Horner on binomially weighted coefficients) against de
+// Casteljau's scheme, which shares nothing with it: the value, and the slope as a central
+// difference.
+TEST(MidpointPolynomial, AgreesWithDeCasteljau) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        BernsteinBall g;
+        g.degree = trial % 16;
+        double scale = 0.0;
+        for (int i = 0; i <= g.degree; ++i) {
+            g.b[i] = unit(random);
+            g.r[i] = 0.0;
+            scale += std::abs(g.b[i]);
+        }
+        const MidpointPolynomial midpoint(g);
+        const double sigma = fraction(random);
+        const ValueSlope prepared = midpoint.at(sigma);
+        const BallValue reference = evaluate(g, sigma);
+        EXPECT_NEAR(prepared.value, reference.value, 1e-13 * scale + reference.radius);
+        // The slope against a central difference of de Casteljau values.
+        if (g.degree > 0 && sigma > 1e-3 && sigma < 1.0 - 1e-3) {
+            const double h = 1e-6;
+            const double difference =
+                (evaluate(g, sigma + h).value - evaluate(g, sigma - h).value) / (2.0 * h);
+            EXPECT_NEAR(prepared.slope, difference, 1e-5 * (1.0 + std::abs(difference)) * scale);
+        }
+    }
+}
+
+// Descartes' bound under uncertainty against brute force: every choice of signs (±1) for the
+// coefficients the ball leaves uncertain, counting the changes of each.
+TEST(MostSignChanges, IsTheMostOverEveryChoiceOfTheUncertainSigns) {
+    std::mt19937_64 random(5);
+    std::uniform_int_distribution<int> kind(0, 2);
+    for (int trial = 0; trial < 3000; ++trial) {
+        BernsteinBall g;
+        g.degree = trial % 15;
+        std::vector<int> uncertain;
+        for (int i = 0; i <= g.degree; ++i) {
+            switch (kind(random)) {
+            case 0:
+                g.b[i] = 1.0;
+                g.r[i] = 0.5;
+                break;
+            case 1:
+                g.b[i] = -1.0;
+                g.r[i] = 0.5;
+                break;
+            default:
+                g.b[i] = 0.25 * (trial % 3 - 1);
+                g.r[i] = 0.5;
+                uncertain.push_back(i);
+                break;
+            }
+        }
+        if (uncertain.size() > 10) {
+            continue;
+        }
+        int most = 0;
+        for (unsigned choice = 0; choice < (1u << uncertain.size()); ++choice) {
+            std::vector<int> signs;
+            std::size_t next = 0;
+            for (int i = 0; i <= g.degree; ++i) {
+                if (next < uncertain.size() && uncertain[next] == i) {
+                    signs.push_back((choice >> next) & 1u ? 1 : -1);
+                    ++next;
+                } else {
+                    signs.push_back(g.b[i] > 0.0 ? 1 : -1);
+                }
+            }
+            int changes = 0;
+            for (std::size_t i = 1; i < signs.size(); ++i) {
+                changes += signs[i] != signs[i - 1] ? 1 : 0;
+            }
+            most = std::max(most, changes);
+        }
+        EXPECT_EQ(most_sign_changes(g), most) << "trial " << trial;
+    }
 }
 
 // The exact polynomial Σ c_k x^k for a choice inside every radius, carried to σ = (1 + x)/2
