@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace locus::render {
@@ -19,14 +21,19 @@ double gamma(int k) {
 // (at most 3·41² of them): covers underflow, which the relative bounds do not.
 constexpr double kUnderflow = 0x1.0p-1040;
 
-// Binomial coefficients C(n, k) for n ≤ kMaxDegree, exact (C(40, 20) < 2^53).
+// Binomial coefficients C(n, k) for n ≤ kMaxDegree: exact in 64-bit integers (C(64, 32) < 2^61),
+// and as doubles rounded once from them (exact up to C(56, 28) < 2^53).
 struct Binomials {
+    std::array<std::array<long long, kMaxDegree + 1>, kMaxDegree + 1> exact{};
     std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> c{};
     Binomials() {
         for (int n = 0; n <= kMaxDegree; ++n) {
-            c[n][0] = c[n][n] = 1.0;
+            exact[n][0] = exact[n][n] = 1;
             for (int k = 1; k < n; ++k) {
-                c[n][k] = c[n - 1][k - 1] + c[n - 1][k];
+                exact[n][k] = exact[n - 1][k - 1] + exact[n - 1][k];
+            }
+            for (int k = 0; k <= n; ++k) {
+                c[n][k] = static_cast<double>(exact[n][k]);
             }
         }
     }
@@ -36,59 +43,50 @@ const Binomials& binomials() {
     return table;
 }
 
-}  // namespace
-
-namespace {
-
 // β[n][i][k]: Bernstein coefficient i (degree n, on [−1, 1]) of x^k, i.e. x^k =
 // Σ_i β_ik·C(n, i)·((1 − x)/2)^(n − i)·((1 + x)/2)^i, for n ≤ kMaxDegree:
 //     β_ik = Σ_j C(i, j)·C(n − i, k − j)·(−1)^(k − j) / C(n, k),
-// the sum exact in 128-bit integers (C(40, 20)² < 2^75) and the quotient rounded once. Every
-// |β_ik| ≤ 1 (x^k lies in [−1, 1]), so converting a ball does not magnify its radii.
+// the sum exact in 128-bit integers (its terms' magnitudes sum to C(n, k) < 2^61, Vandermonde)
+// and the quotient rounded once in long double, then to double. Every |β_ik| ≤ 1 (x^k lies in
+// [−1, 1]), so converting a ball does not magnify its radii.
 __extension__ using Int128 = __int128;  // GCC's 128-bit integers (not ISO C++)
 
-// Only the first half of the rows is kept: B_i(−x) = B_{n−i}(x), so β_{n−i,k} = (−1)^k·β_ik,
-// and to_bernstein forms coefficients i and n − i together from the even and odd columns.
+// One degree's weights. Only the first half of the rows is kept: B_i(−x) = B_{n−i}(x), so
+// β_{n−i,k} = (−1)^k·β_ik, and to_bernstein forms coefficients i and n − i together from the
+// even and odd columns.
 struct CenteredWeights {
-    // [n][k·(n/2 + 1) + i] for i ≤ n/2: by column (k), so that to_bernstein adds a
-    // coefficient's column to every output in one contiguous loop; and their magnitudes, for
-    // the radii.
-    std::vector<std::vector<double>> by_degree, magnitudes;
-    CenteredWeights() {
-        std::array<std::array<long long, kMaxDegree + 1>, kMaxDegree + 1> c{};
-        for (int n = 0; n <= kMaxDegree; ++n) {
-            c[n][0] = c[n][n] = 1;
-            for (int k = 1; k < n; ++k) {
-                c[n][k] = c[n - 1][k - 1] + c[n - 1][k];
-            }
-        }
-        by_degree.resize(kMaxDegree + 1);
-        magnitudes.resize(kMaxDegree + 1);
-        for (int n = 0; n <= kMaxDegree; ++n) {
-            const int half = n / 2;
-            auto& table = by_degree[n];
-            table.assign(static_cast<std::size_t>((n + 1) * (half + 1)), 0.0);
-            magnitudes[n].assign(table.size(), 0.0);
-            for (int i = 0; i <= half; ++i) {
-                for (int k = 0; k <= n; ++k) {
-                    Int128 sum = 0;
-                    for (int j = std::max(0, k - (n - i)); j <= std::min(i, k); ++j) {
-                        const Int128 term = static_cast<Int128>(c[i][j]) * c[n - i][k - j];
-                        sum += (k - j) % 2 == 0 ? term : -term;
-                    }
-                    const auto at = static_cast<std::size_t>(k * (half + 1) + i);
-                    table[at] = static_cast<double>(static_cast<long double>(sum) /
-                                                    static_cast<long double>(c[n][k]));
-                    magnitudes[n][at] = std::abs(table[at]);
+    // [k·(n/2 + 1) + i] for i ≤ n/2: by column (k), so that to_bernstein adds a coefficient's
+    // column to every output in one contiguous loop; and their magnitudes, for the radii.
+    std::vector<double> weights, magnitudes;
+    explicit CenteredWeights(int n) {
+        const auto& c = binomials().exact;
+        const int half = n / 2;
+        weights.assign(static_cast<std::size_t>((n + 1) * (half + 1)), 0.0);
+        magnitudes.assign(weights.size(), 0.0);
+        for (int i = 0; i <= half; ++i) {
+            for (int k = 0; k <= n; ++k) {
+                Int128 sum = 0;
+                for (int j = std::max(0, k - (n - i)); j <= std::min(i, k); ++j) {
+                    const Int128 term = static_cast<Int128>(c[i][j]) * c[n - i][k - j];
+                    sum += (k - j) % 2 == 0 ? term : -term;
                 }
+                const auto at = static_cast<std::size_t>(k * (half + 1) + i);
+                weights[at] = static_cast<double>(static_cast<long double>(sum) /
+                                                  static_cast<long double>(c[n][k]));
+                magnitudes[at] = std::abs(weights[at]);
             }
         }
     }
 };
 
-const CenteredWeights& centered_weights() {
-    static const CenteredWeights weights;
-    return weights;
+// Built for a degree when a ball of that degree is first converted (a render needs one or two
+// degrees; all 65 took 1 % of a whole `locus render` of a sphere), once per process.
+const CenteredWeights& centered_weights(int n) {
+    static std::array<std::once_flag, kMaxDegree + 1> built;
+    static std::array<std::unique_ptr<CenteredWeights>, kMaxDegree + 1> tables;
+    const auto at = static_cast<std::size_t>(n);
+    std::call_once(built[at], [&] { tables[at] = std::make_unique<CenteredWeights>(n); });
+    return *tables[at];
 }
 
 }  // namespace
@@ -127,7 +125,7 @@ BernsteinBall to_bernstein(const RestrictionBall& g) {
     if (n < 0) {
         return out;
     }
-    const auto& weights = centered_weights();
+    const CenteredWeights& weights = centered_weights(n);
     // Every term meets at most n + 5 roundings: the weight's (and the long double quotient's),
     // the product, the running sum (in any order), and the even and odd parts' sum.
     const double rounding = gamma(n + 5);
@@ -137,8 +135,7 @@ BernsteinBall to_bernstein(const RestrictionBall& g) {
     }
     const int half = n / 2;
     std::array<double, kMaxDegree / 2 + 1> even{}, odd{}, radii{};
-    add_columns(n, weights.by_degree[static_cast<std::size_t>(n)].data(),
-                weights.magnitudes[static_cast<std::size_t>(n)].data(), g.polynomial.c.data(),
+    add_columns(n, weights.weights.data(), weights.magnitudes.data(), g.polynomial.c.data(),
                 errors.data(), even.data(), odd.data(), radii.data());
     for (int i = 0; i <= half; ++i) {
         const double radius = radii[i] * (1.0 + 2.0 * rounding) + kUnderflow;
@@ -375,9 +372,10 @@ SlopeBounds slope_bounds(const BernsteinBall& g) {
     out.hull_lo = down(hull_lo);
     out.hull_hi = up(hull_hi);
     // MidpointPolynomial::at sums (b_{i+1} − b_i)·C(n − 1, i)·σ^i·s^(n−1−i), s = fl(1 − σ): every
-    // term meets at most 3n + 4 roundings (the difference, the weight, the n − 1 − i products
-    // of s and s's own rounding, i products by σ and i + 1 sums, the final n·), so the slope is
-    // within γ_{3n+4}·n·Σ|b_{i+1} − b_i|·B_{i,n−1}(σ) ≤ γ_{3n+4}·n·max|b_{i+1} − b_i| of the
+    // term meets at most 3n + 5 roundings (the difference, the binomial's own past 2^53, the
+    // weight, the n − 1 − i products of s and s's own rounding, i products by σ and i + 1 sums,
+    // the final n·), so the slope is within γ_{3n+5}·n·Σ|b_{i+1} − b_i|·B_{i,n−1}(σ) ≤
+    // γ_{3n+5}·n·max|b_{i+1} − b_i| of the
     // midpoint polynomial's (the B_{i,n−1} ≥ 0 sum to 1), which is within n·max(r_i + r_{i+1})
     // of the exact one's.
     out.point_error = n * (radii + gamma(4 * n + 8) * largest_difference) * widen + kUnderflow;

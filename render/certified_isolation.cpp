@@ -404,7 +404,8 @@ Bracket narrow_root(const BernsteinBall& piece, const MidpointPolynomial& midpoi
 
 RootRange mean_value_bracket(const MidpointPolynomial& midpoint, const SlopeBounds& slopes,
                              int sign_at_zero, double sigma, double blur, double value,
-                             double error, double lo, double hi) {
+                             double error) {
+    constexpr double lo = 0.0, hi = 1.0;  // where σ* is known to lie
     RootRange out{lo, hi};
     constexpr double kUnit = 0x1.0p-53;
     constexpr double kSlack = 1.0 + 8.0 * kUnit;  // a few roundings of a product or quotient

@@ -47,19 +47,19 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
                                   double guess, double reach);
 
 // What one value of G places about its root, by the mean value theorem. `g` has exactly one
-// root σ* in [0, 1], G of sign `sign_at_zero` before it and of the other sign after, and σ* lies
-// in [lo, hi]; G(s) ∈ [value − error, value + error] at some s ∈ [0, 1] within `blur` of the
-// double `sigma` ∈ [0, 1]. Then σ* − s = −G(s)/G'(ξ) for some ξ between s and σ*, and
-// `slopes` bounds G'(ξ) about the midpoint polynomial's slope at `sigma` (slope_bounds(g)). The
-// result is a bracket of σ* within [lo, hi] — [lo, hi] itself when the bounds cannot tell (G'
-// may vanish near σ*, or G(s) is too uncertain). From a point a ball's blur away from σ*, it
+// root σ* in [0, 1], G of sign `sign_at_zero` before it and of the other sign after;
+// G(s) ∈ [value − error, value + error] at some s ∈ [0, 1] within `blur` of the double
+// `sigma` ∈ [0, 1]. Then σ* − s = −G(s)/G'(ξ) for some ξ between s and σ*, and `slopes` bounds
+// G'(ξ) about the midpoint polynomial's slope at `sigma` (slope_bounds(g)). The result is a
+// bracket of σ* within [0, 1] — [0, 1] itself when the bounds cannot tell (G' may vanish near
+// σ*, or G(s) is too uncertain). From a point a ball's blur away from σ*, it
 // places σ* to far below that blur: one evaluation where signs either side of σ* take two.
 struct RootRange {
     double lo = 0.0, hi = 1.0;
 };
 RootRange mean_value_bracket(const MidpointPolynomial& midpoint, const SlopeBounds& slopes,
                              int sign_at_zero, double sigma, double blur, double value,
-                             double error, double lo, double hi);
+                             double error);
 
 // The most sign changes of any choice of signs for the coefficients the ball leaves uncertain.
 int most_sign_changes(const BernsteinBall& g);

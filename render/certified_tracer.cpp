@@ -162,17 +162,17 @@ RootResult CertifiedTracer::narrow(const Ray& ray, const Piece& piece, double to
     // The mean value theorem then places the root from one point (mean_value_bracket), in σ
     // of the piece: a probe at p is G at σ(p), within the map's error of the σ p rounds to.
     const SlopeBounds slopes = slope_bounds(piece.ball);
+    const bool map_is_sharp = m < 0.01 * span;  // else the point's σ is too blurred to use
     const auto mean_value_step = [&](double p, const algebra::ValueEnclosure& e) {
-        if (!(m < 0.01 * span)) {
+        if (!map_is_sharp) {
             return;
         }
         const double sigma = std::clamp((p - piece.t_lo) / span, 0.0, 1.0);
         const double blur =
             (std::abs(at(sigma) - p) * (1.0 + 4.0 * kUnit) + m + 2.0 * kUnit * std::abs(p)) / span *
             (1.0 + 4.0 * m / span + 4.0 * kUnit);
-        const RootRange range =
-            mean_value_bracket(midpoint, slopes, piece.sign_at_lo, sigma, blur, e.value,
-                               std::abs(e.value_low) + e.radius, 0.0, 1.0);
+        const RootRange range = mean_value_bracket(midpoint, slopes, piece.sign_at_lo, sigma, blur,
+                                                   e.value, std::abs(e.value_low) + e.radius);
         left = std::max(left, at(range.lo) - m);
         right = std::min(right, at(range.hi) + m);
         probe_lo = std::max(probe_lo, left);
@@ -362,16 +362,6 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             }
             return exact(ray, interval, work);
         }
-        // Expanding about a narrower piece shrinks the radii of the powers of t (they scale
-        // with the piece's width), not the constant term's: the rounding of f at the middle,
-        // u·Σ|terms| there. Once that floor is most of the radius (degree 34 and up, near
-        // |x| = 1), doubles cannot decide however narrow the piece: when such a segment leaves
-        // a piece undecided, every later segment of the ray is expanded in double-double.
-        double power_radii = 0.0;
-        for (int k = 1; k <= power.polynomial.degree; ++k) {
-            power_radii += power.radius[k];
-        }
-        const bool at_floor = !precise && !(power_radii > power.radius[0]);
         const BernsteinBall ball = to_bernstein(power);
         // The first segment is searched near the previous ray's root first: on a row of a
         // degree-30 frame that skips the bisection down to the first root (a third of the
@@ -398,7 +388,18 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             piece_reach = 0.5 * (piece.t_hi - piece.t_lo);
             return narrow(ray, piece, tolerance, work, doubles_first);
         }
-        doubles_at_floor = doubles_at_floor || at_floor;
+        // Expanding about a narrower piece shrinks the radii of the powers of t (they scale
+        // with the piece's width), not the constant term's: the rounding of f at the middle,
+        // u·Σ|terms| there. Once that floor is most of the radius (degree 34 and up, near
+        // |x| = 1), doubles cannot decide however narrow the piece: when such a segment leaves
+        // a piece undecided, every later segment of the ray is expanded in double-double.
+        if (!precise) {
+            double power_radii = 0.0;
+            for (int k = 1; k <= power.polynomial.degree; ++k) {
+                power_radii += power.radius[k];
+            }
+            doubles_at_floor = !(power_radii > power.radius[0]);
+        }
         const double piece_a = std::max(a, t_at(isolation.lo) - margin);
         const double piece_b = std::min(b, t_at(isolation.hi) + margin);
         const double rest_a = std::max(a, t_at(isolation.hi) - margin);
@@ -417,7 +418,7 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
             }
             if (!precise) {
                 if (piece_b < b) {
-                    stack[top++] = {piece_b, b, doubles_at_floor};
+                    stack[top++] = {piece_b, b, false};
                 }
                 stack[top++] = {lo, piece_b, true};
                 continue;

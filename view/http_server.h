@@ -18,8 +18,8 @@ struct HttpRequest {
     std::multimap<std::string, std::string> params;
     // The first value of the field `name`, or "" when there is none.
     std::string param(const std::string& name) const {
-        const auto found = params.find(name);
-        return found == params.end() ? std::string() : found->second;
+        const auto found = params.lower_bound(name);  // the first of equal keys, in order
+        return found == params.end() || found->first != name ? std::string() : found->second;
     }
 };
 

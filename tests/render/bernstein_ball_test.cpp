@@ -426,9 +426,8 @@ TEST(MeanValueBracket, HoldsTheRootAndPlacesItFromOneValue) {
         const double error = fmpq_get_d(absolute_difference(value, exact(rounded)).get()) *
                              (1.01 + (trial % 4 == 1 ? 0.5 * fraction(random) : 0.0));
         const double known_blur = blur > 0.0 ? std::abs(sigma - s) * 1.01 : 0.0;
-        const RootRange range =
-            mean_value_bracket(MidpointPolynomial(g), slope_bounds(g), sign_at_zero, sigma,
-                               known_blur, rounded, error, 0.0, 1.0);
+        const RootRange range = mean_value_bracket(MidpointPolynomial(g), slope_bounds(g),
+                                                   sign_at_zero, sigma, known_blur, rounded, error);
         ASSERT_LE(range.lo, range.hi);
         const int at_lo = sign_at(range.lo), at_hi = sign_at(range.hi);
         EXPECT_TRUE(at_lo == sign_at_zero || at_lo == 0)
