@@ -131,6 +131,12 @@ class MonomialLayout {
     // gcd(a, b) == 1, tested on the variable fields only.
     bool coprime(const std::uint64_t* a, const std::uint64_t* b) const;
 
+    // What compare() and multiply() use, for kernels that fix the number of words at compile
+    // time (geobucket.cpp): a monomial's words XOR compare_mask() compare as unsigned integers,
+    // most significant word first; a product with a bit of guard_mask() set has overflowed.
+    const std::uint64_t* compare_mask() const { return compare_mask_.data(); }
+    std::uint64_t guard_mask() const { return guard_mask_; }
+
     // A 64-bit mask with bit (i mod 64) set when variable i occurs: if mask(a) has a bit that
     // mask(b) lacks, a cannot divide b (Singular's short exponent vector).
     std::uint64_t divisibility_mask(const std::uint64_t* m) const;

@@ -1,6 +1,7 @@
 #include "algebra/groebner/geobucket.h"
 
 #include <algorithm>
+#include <array>
 
 #include "algebra/groebner/small_integer.h"
 
@@ -8,17 +9,88 @@ namespace locus::algebra::detail {
 
 namespace {
 
-// One packed monomial (w words) from `from` to `to`. Rings of up to seven variables under a
-// degree order take two words: spelled out for one and two, a copy is two moves rather than a
-// loop (std::copy_n with a run-time count was 4 % of eco-7's instructions).
-inline void copy_monomial(const std::uint64_t* from, std::size_t w, std::uint64_t* to) {
-    if (w == 2) {
-        to[0] = from[0];
-        to[1] = from[1];
-    } else if (w == 1) {
-        to[0] = from[0];
-    } else {
-        std::copy_n(from, w, to);
+// The monomial operations of a merge, with the number of words fixed at compile time (W > 0)
+// or read from the layout (W = 0). Rings of up to 15 variables under a degree order take one
+// to four words; MonomialLayout's own loops (and std::copy_n, a call to memmove) were a fifth
+// of eco-11's time in the merges.
+template <std::size_t W>
+class Words {
+  public:
+    explicit Words(const MonomialLayout& layout) : layout_(layout), guard_(layout.guard_mask()) {
+        if constexpr (W > 0) {
+            std::copy_n(layout.compare_mask(), W, mask_.begin());
+        }
+    }
+    std::size_t count() const {
+        if constexpr (W > 0) {
+            return W;
+        } else {
+            return layout_.words();
+        }
+    }
+    int compare(const std::uint64_t* a, const std::uint64_t* b) const {
+        if constexpr (W == 0) {
+            return layout_.compare(a, b);
+        } else {
+            for (std::size_t w = 0; w < W; ++w) {
+                const std::uint64_t x = a[w] ^ mask_[w], y = b[w] ^ mask_[w];
+                if (x != y) {
+                    return x > y ? 1 : -1;
+                }
+            }
+            return 0;
+        }
+    }
+    // out = a·b; `out` aliases neither. Throws ExponentOverflow as MonomialLayout does.
+    void multiply(const std::uint64_t* a, const std::uint64_t* b, std::uint64_t* out) const {
+        if constexpr (W == 0) {
+            layout_.multiply(a, b, out);
+        } else {
+            std::uint64_t overflow = 0;
+            for (std::size_t w = 0; w < W; ++w) {
+                out[w] = a[w] + b[w];
+                overflow |= out[w];
+            }
+            if ((overflow & guard_) != 0) {
+                layout_.multiply(a, b, out);  // throws
+            }
+        }
+    }
+    void copy(const std::uint64_t* from, std::uint64_t* to) const {
+        if constexpr (W == 0) {
+            std::copy_n(from, layout_.words(), to);
+        } else {
+            for (std::size_t w = 0; w < W; ++w) {
+                to[w] = from[w];
+            }
+        }
+    }
+
+  private:
+    const MonomialLayout& layout_;
+    std::uint64_t guard_;
+    std::array<std::uint64_t, (W > 0 ? W : 1)> mask_{};
+};
+
+// Calls f.template operator()<W>() for the layout's word count.
+template <typename F>
+void with_words(const MonomialLayout& layout, F&& f) {
+    switch (layout.words()) {
+    case 1:
+        f.template operator()<1>();
+        break;
+    case 2:
+        f.template operator()<2>();
+        break;
+    case 3:
+        f.template operator()<3>();
+        break;
+    case 4:
+        f.template operator()<4>();
+        break;
+    default:
+        f.template operator()<0>();
+        break;
     }
 }
 
@@ -34,7 +106,7 @@ std::size_t GeoBucket::level_for(std::size_t length) {
 
 void GeoBucket::assign(IntegerPolynomial p) {
     for (Bucket& b : buckets_) {
-        b.clear();
+        b.release();
     }
     if (p.empty()) {
         return;
@@ -43,8 +115,17 @@ void GeoBucket::assign(IntegerPolynomial p) {
     if (buckets_.size() <= level) {
         buckets_.resize(level + 1);
     }
-    buckets_[level].monomials = std::move(p.monomials);
-    buckets_[level].coefficients = std::move(p.coefficients);
+    Bucket& bucket = buckets_[level];
+    bucket.monomials = std::move(p.monomials);
+    if (bucket.coefficients.size() < p.size()) {
+        bucket.coefficients.resize(p.size());
+    }
+    // The coefficients change hands: p keeps zeros, which own nothing.
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        bucket.coefficients[k] = *p.coefficients[k].get();
+        *p.coefficients[k].get() = 0;
+    }
+    bucket.count = p.size();
 }
 
 void GeoBucket::carry(std::size_t level) {
@@ -59,55 +140,67 @@ void GeoBucket::carry(std::size_t level) {
 }
 
 void GeoBucket::merge(Bucket& target, Bucket& source) {
+    with_words(layout_, [&]<std::size_t W>() { merge_words<W>(target, source); });
+}
+
+template <std::size_t W>
+void GeoBucket::merge_words(Bucket& target, Bucket& source) {
     if (source.size() == 0) {
-        source.clear();
+        source.forget();
         return;
     }
     if (target.size() == 0) {
-        std::swap(target, source);
-        source.clear();
+        target.forget();
+        target.swap(source);
         return;
     }
-    const std::size_t w = layout_.words();
+    const Words<W> words(layout_);
+    const std::size_t w = words.count();
     Bucket& out = scratch_;
-    out.clear();
-    // Monomials are written by index: an insert per term was a call to memmove for 1–2 words.
-    out.coefficients.reserve(target.size() + source.size());
-    std::uint64_t* written = out.monomial_storage((target.size() + source.size()) * w);
+    out.make_room(target.size() + source.size(), w);
+    fmpz* out_coefficients = out.coefficients.data();
+    std::uint64_t* out_monomials = out.monomials.data();
+    std::size_t n = 0;
+    fmpz* const t_coefficients = target.coefficients.data();
+    fmpz* const s_coefficients = source.coefficients.data();
+    const std::uint64_t* const t_monomials = target.monomials.data();
+    const std::uint64_t* const s_monomials = source.monomials.data();
     std::size_t i = target.head, j = source.head;
-    const std::size_t i_end = target.coefficients.size(), j_end = source.coefficients.size();
-    auto take = [&](Bucket& from, std::size_t& k) {
-        out.coefficients.emplace_back(std::move(from.coefficients[k]));
-        copy_monomial(from.monomials.data() + k * w, w, written);
-        written += w;
+    const std::size_t i_end = target.count, j_end = source.count;
+    auto take = [&](fmpz* coefficients, const std::uint64_t* monomials, std::size_t& k) {
+        out_coefficients[n] = coefficients[k];
+        words.copy(monomials + k * w, out_monomials + n * w);
+        ++n;
         ++k;
     };
     while (i < i_end && j < j_end) {
-        const int order =
-            layout_.compare(target.monomials.data() + i * w, source.monomials.data() + j * w);
+        const int order = words.compare(t_monomials + i * w, s_monomials + j * w);
         if (order > 0) {
-            take(target, i);
+            take(t_coefficients, t_monomials, i);
         } else if (order < 0) {
-            take(source, j);
+            take(s_coefficients, s_monomials, j);
         } else {
-            Integer& sum = target.coefficients[i];
-            add(sum.get(), source.coefficients[j].get());
+            // FLINT keeps a zero as the word 0, owning nothing: a cancelled term is dropped.
+            add(&t_coefficients[i], &s_coefficients[j]);
+            fmpz_clear(&s_coefficients[j]);
             ++j;
-            if (sum.is_zero()) {
+            if (fmpz_is_zero(&t_coefficients[i])) {
                 ++i;
             } else {
-                take(target, i);
+                take(t_coefficients, t_monomials, i);
             }
         }
     }
     while (i < i_end) {
-        take(target, i);
+        take(t_coefficients, t_monomials, i);
     }
     while (j < j_end) {
-        take(source, j);
+        take(s_coefficients, s_monomials, j);
     }
-    std::swap(target, out);
-    source.clear();
+    out.count = n;
+    target.forget();
+    source.forget();
+    target.swap(out);
 }
 
 void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
@@ -115,7 +208,14 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
     if (from >= g.size()) {
         return;
     }
-    const std::size_t w = layout_.words();
+    with_words(layout_, [&]<std::size_t W>() { subtract_multiple_words<W>(b, m, g, from); });
+}
+
+template <std::size_t W>
+void GeoBucket::subtract_multiple_words(const Integer& b, const std::uint64_t* m,
+                                        const IntegerPolynomial& g, std::size_t from) {
+    const Words<W> words(layout_);
+    const std::size_t w = words.count();
     const std::size_t length = g.size() - from;
     const std::size_t level = level_for(length);
     if (buckets_.size() <= level) {
@@ -123,50 +223,56 @@ void GeoBucket::subtract_multiple(const Integer& b, const std::uint64_t* m,
     }
     Bucket& target = buckets_[level];
     Bucket& out = scratch_;
-    out.clear();
-    out.coefficients.reserve(target.size() + length);
-    std::uint64_t* written = out.monomial_storage((target.size() + length) * w);
+    out.make_room(target.size() + length, w);
+    fmpz* out_coefficients = out.coefficients.data();
+    std::uint64_t* out_monomials = out.monomials.data();
+    std::size_t n = 0;
+    fmpz* const t_coefficients = target.coefficients.data();
+    const std::uint64_t* const t_monomials = target.monomials.data();
     product_.resize(w);
+    std::uint64_t* const product = product_.data();
     fmpz_neg(negated_.get(), b.get());
     std::size_t i = target.head, j = from;
-    const std::size_t i_end = target.coefficients.size();
-    layout_.multiply(g.monomial(j, w), m, product_.data());
-    while (i < i_end || j < g.size()) {
+    const std::size_t i_end = target.count, j_end = g.size();
+    words.multiply(g.monomial(j, w), m, product);
+    while (i < i_end || j < j_end) {
         int order;
-        if (j == g.size()) {
+        if (j == j_end) {
             order = 1;
         } else if (i == i_end) {
             order = -1;
         } else {
-            order = layout_.compare(target.monomials.data() + i * w, product_.data());
+            order = words.compare(t_monomials + i * w, product);
         }
         if (order > 0) {
-            out.coefficients.emplace_back(std::move(target.coefficients[i]));
-            copy_monomial(target.monomials.data() + i * w, w, written);
-            written += w;
+            out_coefficients[n] = t_coefficients[i];
+            words.copy(t_monomials + i * w, out_monomials + n * w);
+            ++n;
             ++i;
             continue;
         }
         if (order < 0) {
-            out.coefficients.emplace_back();
-            mul(out.coefficients.back().get(), g.coefficients[j].get(), negated_.get());
-            copy_monomial(product_.data(), w, written);
-            written += w;
+            out_coefficients[n] = 0;
+            mul(&out_coefficients[n], g.coefficients[j].get(), negated_.get());
+            words.copy(product, out_monomials + n * w);
+            ++n;
         } else {
-            Integer& c = target.coefficients[i];
-            submul(c.get(), g.coefficients[j].get(), b.get());
-            if (!c.is_zero()) {
-                out.coefficients.emplace_back(std::move(c));
-                copy_monomial(product_.data(), w, written);
-                written += w;
+            fmpz* c = &t_coefficients[i];
+            submul(c, g.coefficients[j].get(), b.get());
+            if (!fmpz_is_zero(c)) {
+                out_coefficients[n] = *c;
+                words.copy(product, out_monomials + n * w);
+                ++n;
             }
             ++i;
         }
-        if (++j < g.size()) {
-            layout_.multiply(g.monomial(j, w), m, product_.data());
+        if (++j < j_end) {
+            words.multiply(g.monomial(j, w), m, product);
         }
     }
-    std::swap(target, out);
+    out.count = n;
+    target.forget();
+    target.swap(out);
     carry(level);
 }
 
@@ -184,14 +290,17 @@ bool GeoBucket::pop_leading(std::uint64_t* monomial, Integer& coefficient) {
         if (best == nullptr) {
             return false;
         }
-        copy_monomial(best->monomials.data() + best->head * w, w, monomial);
-        fmpz_swap(coefficient.get(), best->coefficients[best->head].get());
+        std::copy_n(best->monomials.data() + best->head * w, w, monomial);
+        // The term's coefficient changes hands.
+        fmpz_clear(coefficient.get());
+        *coefficient.get() = best->coefficients[best->head];
         ++best->head;
         // Each bucket holds a monomial at most once, so at most one term per other bucket.
         for (Bucket& b : buckets_) {
             if (&b != best && b.size() != 0 &&
                 layout_.equal(b.monomials.data() + b.head * w, monomial)) {
-                add(coefficient.get(), b.coefficients[b.head].get());
+                add(coefficient.get(), &b.coefficients[b.head]);
+                fmpz_clear(&b.coefficients[b.head]);
                 ++b.head;
             }
         }
@@ -203,16 +312,16 @@ bool GeoBucket::pop_leading(std::uint64_t* monomial, Integer& coefficient) {
 
 void GeoBucket::scale(const Integer& a) {
     for (Bucket& b : buckets_) {
-        for (std::size_t k = b.head; k < b.coefficients.size(); ++k) {
-            mul(b.coefficients[k].get(), b.coefficients[k].get(), a.get());
+        for (std::size_t k = b.head; k < b.count; ++k) {
+            mul(&b.coefficients[k], &b.coefficients[k], a.get());
         }
     }
 }
 
 void GeoBucket::fold_content(Integer& g) const {
     for (const Bucket& b : buckets_) {
-        for (std::size_t k = b.head; k < b.coefficients.size(); ++k) {
-            fmpz_gcd(g.get(), g.get(), b.coefficients[k].get());
+        for (std::size_t k = b.head; k < b.count; ++k) {
+            fmpz_gcd(g.get(), g.get(), &b.coefficients[k]);
             if (g.is_one()) {
                 return;
             }
@@ -222,8 +331,8 @@ void GeoBucket::fold_content(Integer& g) const {
 
 void GeoBucket::divide_exactly(const Integer& g) {
     for (Bucket& b : buckets_) {
-        for (std::size_t k = b.head; k < b.coefficients.size(); ++k) {
-            fmpz_divexact(b.coefficients[k].get(), b.coefficients[k].get(), g.get());
+        for (std::size_t k = b.head; k < b.count; ++k) {
+            fmpz_divexact(&b.coefficients[k], &b.coefficients[k], g.get());
         }
     }
 }
