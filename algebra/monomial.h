@@ -137,9 +137,13 @@ class MonomialLayout {
     const std::uint64_t* compare_mask() const { return compare_mask_.data(); }
     std::uint64_t guard_mask() const { return guard_mask_; }
 
-    // A 64-bit mask with bit (i mod 64) set when variable i occurs: if mask(a) has a bit that
-    // mask(b) lacks, a cannot divide b (Singular's short exponent vector).
+    // A 64-bit filter for divisibility (Singular's short exponent vector): if mask(a) has a bit
+    // that mask(b) lacks, a cannot divide b. Up to 32 variables, variable i owns the
+    // mask_bits_per_variable() bits from i·that, of which the lowest min(e_i, that) are set;
+    // with more, bit (i mod 64) is set when variable i occurs.
     std::uint64_t divisibility_mask(const std::uint64_t* m) const;
+    // 1 past 32 variables.
+    unsigned mask_bits_per_variable() const { return mask_bits_per_variable_; }
 
   private:
     [[noreturn]] static void throw_overflow();
@@ -160,7 +164,8 @@ class MonomialLayout {
     // bit is 16k + 15), the divisibility_mask bits of the variables among them: the mask then
     // costs a few word operations per word. Reading the fields one variable at a time took 140
     // instructions a call on eco-7 (3 % of Buchberger's instructions there).
-    std::vector<std::array<std::uint64_t, 16>> mask_table_;
+    std::vector<std::array<std::uint64_t, 16>> mask_table_;  // past 32 variables
+    unsigned mask_bits_per_variable_ = 1;
 };
 
 // The shape of a reduced (or minimal) basis: the leading monomials lead(0), …, lead(n − 1) are

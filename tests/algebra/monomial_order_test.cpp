@@ -25,6 +25,12 @@ struct OrderCase {
 
 std::vector<OrderCase> order_cases() {
     const std::vector<std::string> v4 = {"x", "y", "z", "w"};
+    std::vector<std::string> wide;
+    for (char first = 'a'; first < 'f'; ++first) {
+        for (char second = 'a'; second < 'i'; ++second) {
+            wide.push_back(std::string{first, second});  // 40 names: aa … eh
+        }
+    }
     return {{"lex", "lex", v4},
             {"grlex", "grlex", v4},
             {"grevlex", "grevlex", v4},
@@ -33,7 +39,9 @@ std::vector<OrderCase> order_cases() {
             {"elim_inner", "elim(z,y)", v4},
             {"matrix", "matrix((1,1,1,1),(0,0,0,-1),(0,0,-1,0),(0,-1,0,0))", v4},
             {"matrix_mixed", "matrix((2,1,0,1),(0,-1,1,0),(0,0,0,1),(1,0,0,0))", v4},
-            {"grevlex_many", "grevlex", {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"}}};
+            {"grevlex_many", "grevlex", {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"}},
+            // Past 32 variables the divisibility mask has one bit a variable.
+            {"grevlex_wide", "grevlex", wide}};
 }
 
 class MonomialOrderTest : public ::testing::TestWithParam<OrderCase> {};
@@ -101,12 +109,26 @@ TEST_P(MonomialOrderTest, TotalMultiplicativeAndOneSmallest) {
         }
         EXPECT_EQ(layout.coprime(pa.data(), pb.data()), coprime);
         EXPECT_EQ(layout.divides(pa.data(), pb.data()), a_divides_b);
-        // The divisibility mask has bit i mod 64 exactly for the variables that occur.
-        std::uint64_t occurring = 0;
+        // The divisibility mask: up to 32 variables, min(64/n, 16) bits each holding min(e, that)
+        // in unary; past that, bit i mod 64 for each variable that occurs. Either way it never
+        // rejects a divisor.
+        const unsigned bits = layout.mask_bits_per_variable();
+        EXPECT_EQ(bits, n <= 32 ? std::min<unsigned>(16, static_cast<unsigned>(64 / n)) : 1u);
+        std::uint64_t expected = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            occurring |= a[i] != 0 ? std::uint64_t{1} << (i % 64) : 0;
+            if (bits > 1) {
+                const std::uint32_t run = std::min<std::uint32_t>(a[i], bits);
+                expected |= ((std::uint64_t{1} << run) - 1) << (i * bits);
+            } else {
+                expected |= a[i] != 0 ? std::uint64_t{1} << (i % 64) : 0;
+            }
         }
-        EXPECT_EQ(layout.divisibility_mask(pa.data()), occurring);
+        const std::uint64_t mask_a = layout.divisibility_mask(pa.data());
+        EXPECT_EQ(mask_a, expected);
+        EXPECT_EQ(mask_a & ~layout.divisibility_mask(pac.data()), 0u);  // a divides a·m
+        if (a_divides_b) {
+            EXPECT_EQ(mask_a & ~layout.divisibility_mask(pb.data()), 0u);
+        }
         // The packed lcm must equal packing the exponent-wise max (linear fields recomputed).
         std::vector<std::uint64_t> repacked(w);
         layout.pack(back, repacked.data());
