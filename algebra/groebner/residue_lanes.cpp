@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <atomic>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include <immintrin.h>
 
 #include <flint/ulong_extras.h>
+
+#include "algebra/groebner/log_bound.h"
 
 // GCC 12 sees the _mm512_undefined_epi32() inside AVX-512 intrinsics as uninitialized reads
 // (GCC bug 105593); the intrinsics are correct.
@@ -19,6 +22,8 @@
 namespace locus::algebra::detail {
 
 namespace {
+
+using lanes::ColumnBounds;
 
 // x·y·2^-32 mod p for x·y < 2^32·p (one operand below p suffices).
 inline std::uint32_t montgomery(std::uint32_t x, std::uint32_t y, std::uint32_t p,
@@ -34,6 +39,39 @@ inline std::uint32_t add_mod(std::uint32_t x, std::uint32_t y, std::uint32_t p) 
     const std::uint32_t s = x + y;  // < 2p < 2^32
     return s >= p ? s - p : s;
 }
+
+// ColumnBounds's update for term t at `column`, on locals (the caller's copies of its fields:
+// the pending bytes alias everything, so members would be reloaded after every store).
+struct BoundsInLoop {
+    explicit BoundsInLoop(ColumnBounds& b)
+        : bound(b.bound),
+          term(b.term),
+          offset(b.offset),
+          pending(b.pending),
+          fresh(b.fresh + b.fresh_count),
+          highest(b.highest),
+          origin(b) {}
+    void operator()(std::size_t t, std::uint32_t column) {
+        const std::int64_t raised = log_bound::of_sum(bound[column], offset + term[t]);
+        bound[column] = raised;
+        highest = raised > highest ? raised : highest;
+        if (pending[column] == 0) {
+            pending[column] = 1;
+            *fresh++ = column;
+        }
+    }
+    void finish() {
+        origin.fresh_count = static_cast<std::size_t>(fresh - origin.fresh);
+        origin.highest = highest;
+    }
+    std::int64_t* bound;
+    const std::int64_t* term;
+    std::int64_t offset;
+    std::uint8_t* pending;
+    std::uint32_t* fresh;
+    std::int64_t highest;
+    ColumnBounds& origin;
+};
 
 // --- portable ------------------------------------------------------------------------------
 
@@ -212,12 +250,13 @@ LOCUS_AVX512 inline __m512i shoup16(__m512i x, __m512i b, __m512i b_quotient,
 // and the primes and the multiplier stay in registers across the terms.
 // `stride` is the lanes a column and a term hold, kLanes of which (from the given pointers on)
 // this call updates: a wider table is done in chunks of at most 64 lanes.
-template <std::size_t kLanes>
+template <std::size_t kLanes, bool kBounded>
 LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::uint32_t* columns,
                                                std::size_t n, const std::uint32_t* rows,
                                                const std::uint32_t* b,
                                                const std::uint32_t* b_quotients,
-                                               const std::uint32_t* p, std::size_t stride) {
+                                               const std::uint32_t* p, std::size_t stride,
+                                               ColumnBounds* bounds) {
     constexpr std::size_t kBlocks = kLanes / 16;
     constexpr bool kTail = kLanes % 16 != 0;
     __m512i bv[kBlocks + 1], bq[kBlocks + 1], bq_odd[kBlocks + 1], pv[kBlocks + 1];
@@ -234,9 +273,17 @@ LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::
         bq_odd_tail = _mm256_srli_epi64(bq_tail, 32);
         p_tail = load8(p + 16 * kBlocks);
     }
+    std::optional<BoundsInLoop> raise;
+    if constexpr (kBounded) {
+        raise.emplace(*bounds);
+    }
     for (std::size_t t = 0; t < n; ++t) {
-        std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * stride;
+        const std::uint32_t column = columns[t];
+        std::uint32_t* v = table + static_cast<std::size_t>(column) * stride;
         const std::uint32_t* row = rows + t * stride;
+        if constexpr (kBounded) {
+            (*raise)(t, column);
+        }
         for (std::size_t k = 0; k < kBlocks; ++k) {
             const __m512i product =
                 shoup16(_mm512_loadu_si512(row + 16 * k), bv[k], bq[k], bq_odd[k], pv[k]);
@@ -249,47 +296,83 @@ LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::
             store8(v + 16 * kBlocks, add_mod8(load8(v + 16 * kBlocks), product, p_tail));
         }
     }
+    if constexpr (kBounded) {
+        raise->finish();
+    }
+}
+
+template <bool kBounded>
+LOCUS_AVX512 void add_scaled_rows_avx512_with(std::uint32_t* table, const std::uint32_t* columns,
+                                              std::size_t n, const std::uint32_t* rows,
+                                              const std::uint32_t* b,
+                                              const std::uint32_t* b_quotients,
+                                              const std::uint32_t* p, std::size_t lanes,
+                                              ColumnBounds* bounds) {
+    // Chunks of at most 64 lanes, each with its primes and multiplier in registers across the
+    // terms (one masked block loop over all the lanes reloaded them for every term and block:
+    // the certification's 104 lanes of cyclic-8 spent a third of the run there).
+    for (std::size_t l = 0; l < lanes; l += 64) {
+        const std::size_t chunk = std::min<std::size_t>(64, lanes - l);
+        // The bounds are raised once, with the first chunk.
+        auto run = [&](auto unbounded, auto bounded) {
+            if (kBounded && l == 0) {
+                bounded(table + l, columns, n, rows + l, b + l, b_quotients + l, p + l, lanes,
+                        bounds);
+            } else {
+                unbounded(table + l, columns, n, rows + l, b + l, b_quotients + l, p + l, lanes,
+                          nullptr);
+            }
+        };
+        switch (chunk) {
+        case 8:
+            run(add_scaled_rows_avx512_fixed<8, false>, add_scaled_rows_avx512_fixed<8, kBounded>);
+            break;
+        case 16:
+            run(add_scaled_rows_avx512_fixed<16, false>,
+                add_scaled_rows_avx512_fixed<16, kBounded>);
+            break;
+        case 24:
+            run(add_scaled_rows_avx512_fixed<24, false>,
+                add_scaled_rows_avx512_fixed<24, kBounded>);
+            break;
+        case 32:
+            run(add_scaled_rows_avx512_fixed<32, false>,
+                add_scaled_rows_avx512_fixed<32, kBounded>);
+            break;
+        case 40:
+            run(add_scaled_rows_avx512_fixed<40, false>,
+                add_scaled_rows_avx512_fixed<40, kBounded>);
+            break;
+        case 48:
+            run(add_scaled_rows_avx512_fixed<48, false>,
+                add_scaled_rows_avx512_fixed<48, kBounded>);
+            break;
+        case 56:
+            run(add_scaled_rows_avx512_fixed<56, false>,
+                add_scaled_rows_avx512_fixed<56, kBounded>);
+            break;
+        default:  // 64: lanes are a multiple of 8
+            run(add_scaled_rows_avx512_fixed<64, false>,
+                add_scaled_rows_avx512_fixed<64, kBounded>);
+            break;
+        }
+    }
 }
 
 LOCUS_AVX512 void add_scaled_rows_avx512(std::uint32_t* table, const std::uint32_t* columns,
                                          std::size_t n, const std::uint32_t* rows,
                                          const std::uint32_t* b, const std::uint32_t* b_quotients,
                                          const std::uint32_t* p, std::size_t lanes) {
-    // Chunks of at most 64 lanes, each with its primes and multiplier in registers across the
-    // terms (one masked block loop over all the lanes reloaded them for every term and block:
-    // the certification's 104 lanes of cyclic-8 spent a third of the run there).
-    for (std::size_t l = 0; l < lanes; l += 64) {
-        const std::size_t chunk = std::min<std::size_t>(64, lanes - l);
-        auto run = [&](auto fixed) {
-            fixed(table + l, columns, n, rows + l, b + l, b_quotients + l, p + l, lanes);
-        };
-        switch (chunk) {
-        case 8:
-            run(add_scaled_rows_avx512_fixed<8>);
-            break;
-        case 16:
-            run(add_scaled_rows_avx512_fixed<16>);
-            break;
-        case 24:
-            run(add_scaled_rows_avx512_fixed<24>);
-            break;
-        case 32:
-            run(add_scaled_rows_avx512_fixed<32>);
-            break;
-        case 40:
-            run(add_scaled_rows_avx512_fixed<40>);
-            break;
-        case 48:
-            run(add_scaled_rows_avx512_fixed<48>);
-            break;
-        case 56:
-            run(add_scaled_rows_avx512_fixed<56>);
-            break;
-        default:  // 64: lanes are a multiple of 8
-            run(add_scaled_rows_avx512_fixed<64>);
-            break;
-        }
-    }
+    add_scaled_rows_avx512_with<false>(table, columns, n, rows, b, b_quotients, p, lanes, nullptr);
+}
+
+LOCUS_AVX512 void add_scaled_rows_bounded_avx512(std::uint32_t* table, const std::uint32_t* columns,
+                                                 std::size_t n, const std::uint32_t* rows,
+                                                 const std::uint32_t* b,
+                                                 const std::uint32_t* b_quotients,
+                                                 const std::uint32_t* p, std::size_t lanes,
+                                                 ColumnBounds& bounds) {
+    add_scaled_rows_avx512_with<true>(table, columns, n, rows, b, b_quotients, p, lanes, &bounds);
 }
 
 LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t* halves,
@@ -310,6 +393,22 @@ LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t*
     }
 }
 
+// The bounded kernel of an instruction set without a fused one: the kernel, then the bounds.
+template <void (*Kernel)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
+                         const std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
+                         std::size_t)>
+void add_scaled_rows_then_bounds(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                                 const std::uint32_t* rows, const std::uint32_t* b,
+                                 const std::uint32_t* b_quotients, const std::uint32_t* p,
+                                 std::size_t lanes, ColumnBounds& bounds) {
+    Kernel(table, columns, n, rows, b, b_quotients, p, lanes);
+    BoundsInLoop raise(bounds);
+    for (std::size_t t = 0; t < n; ++t) {
+        raise(t, columns[t]);
+    }
+    raise.finish();
+}
+
 struct Kernels {
     const char* name;
     void (*multiply)(std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
@@ -319,12 +418,19 @@ struct Kernels {
                             std::size_t);
     void (*combine_digits)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
                            const std::uint32_t*, const std::uint32_t*, std::size_t);
+    void (*add_scaled_rows_bounded)(std::uint32_t*, const std::uint32_t*, std::size_t,
+                                    const std::uint32_t*, const std::uint32_t*,
+                                    const std::uint32_t*, const std::uint32_t*, std::size_t,
+                                    ColumnBounds&);
 };
 
 constexpr Kernels kPortable{"portable", multiply_portable, add_scaled_rows_portable,
-                            combine_digits_portable};
-constexpr Kernels kAvx2{"avx2", multiply_avx2, add_scaled_rows_avx2, combine_digits_avx2};
-constexpr Kernels kAvx512{"avx512", multiply_avx512, add_scaled_rows_avx512, combine_digits_avx512};
+                            combine_digits_portable,
+                            add_scaled_rows_then_bounds<add_scaled_rows_portable>};
+constexpr Kernels kAvx2{"avx2", multiply_avx2, add_scaled_rows_avx2, combine_digits_avx2,
+                        add_scaled_rows_then_bounds<add_scaled_rows_avx2>};
+constexpr Kernels kAvx512{"avx512", multiply_avx512, add_scaled_rows_avx512, combine_digits_avx512,
+                          add_scaled_rows_bounded_avx512};
 
 const Kernels* best_supported() {
     __builtin_cpu_init();
@@ -438,6 +544,17 @@ void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::si
     }
     kernels().add_scaled_rows(table, columns, n, rows, b, b_quotients, primes.primes(),
                               primes.size());
+}
+
+void add_scaled_rows_bounded(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                             const std::uint32_t* rows, const std::uint32_t* b,
+                             const std::uint32_t* b_quotients, const LanePrimes& primes,
+                             ColumnBounds& bounds) {
+    if (n == 0) {
+        return;  // as add_scaled_rows
+    }
+    kernels().add_scaled_rows_bounded(table, columns, n, rows, b, b_quotients, primes.primes(),
+                                      primes.size(), bounds);
 }
 
 void combine_digits(std::uint32_t* out, const std::uint32_t* halves, std::size_t count,

@@ -65,6 +65,27 @@ void shoup_quotients(std::uint32_t* out, const std::uint32_t* b, const LanePrime
 void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
                      const std::uint32_t* rows, const std::uint32_t* b,
                      const std::uint32_t* b_quotients, const LanePrimes& primes);
+// The certification's bookkeeping beside add_scaled_rows (residue_zero_reducer.h): rigorous
+// bounds per column (log_bound.h units) raised by each term, and which columns are pending.
+// For each term t, at column c: bound[c] = of_sum(bound[c], offset + term[t]), highest = the
+// max of itself and that; a column whose pending byte is 0 gets 1 and is appended to fresh
+// (room for n), fresh_count counting them.
+struct ColumnBounds {
+    std::int64_t* bound;
+    const std::int64_t* term;
+    std::int64_t offset;
+    std::uint8_t* pending;
+    std::uint32_t* fresh;
+    std::size_t fresh_count;
+    std::int64_t highest;
+};
+// add_scaled_rows and the ColumnBounds update in one loop over the terms: the scalar bound
+// work then runs beside the vector multiply-adds instead of after them (a loop of its own was
+// a sixth of katsura-10's certification).
+void add_scaled_rows_bounded(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                             const std::uint32_t* rows, const std::uint32_t* b,
+                             const std::uint32_t* b_quotients, const LanePrimes& primes,
+                             ColumnBounds& bounds);
 // out = Σ_i halves[i]·powers[i·K …]·R⁻¹ for i < count: the residues of the integer whose
 // 32-bit digits are `halves` (least significant first) when powers[i] holds 2^(32·i) in
 // Montgomery form, or its Montgomery form when powers[i] holds 2^(32·(i+1)).

@@ -371,25 +371,17 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
             scale_lambda(factor_.data());
         }
         lanes::shoup_quotients(quotients_.data(), multiplier_lanes_.data(), primes);
-        lanes::add_scaled_rows(level().values.data(), columns, length, el.rows.data(),
-                               multiplier_lanes_.data(), quotients_.data(), primes);
-        {
-            // Locals throughout: bound_ and the members alias as int64s.
-            lb::Units* bound = bound_.data();
-            const lb::Units* term = e.term_bounds.data();
-            lb::Units highest = highest_bound_;
-            for (std::size_t t = 0; t < length; ++t) {
-                const std::uint32_t column = columns[t];
-                const lb::Units fresh = lb::of_sum(bound[column], relative_b + term[t]);
-                bound[column] = fresh;
-                highest = std::max(highest, fresh);
-                if (pending_[column] == 0) {
-                    pending_[column] = 1;
-                    heap_.push_back(column);
-                    std::push_heap(heap_.begin(), heap_.end(), descending);
-                }
-            }
-            highest_bound_ = highest;
+        // The residues and the bounds in one pass over the terms.
+        fresh_.resize(length);
+        lanes::ColumnBounds raise{bound_.data(),   e.term_bounds.data(), relative_b,
+                                  pending_.data(), fresh_.data(),        0,
+                                  highest_bound_};
+        lanes::add_scaled_rows_bounded(level().values.data(), columns, length, el.rows.data(),
+                                       multiplier_lanes_.data(), quotients_.data(), primes, raise);
+        highest_bound_ = raise.highest;
+        for (std::size_t k = 0; k < raise.fresh_count; ++k) {
+            heap_.push_back(fresh_[k]);
+            std::push_heap(heap_.begin(), heap_.end(), descending);
         }
         ++counts.steps;
         if (counts.steps % 16 == 0 && deadline_passed(deadline_)) {

@@ -169,6 +169,7 @@ class ResidueZeroReducer {
     ReducerRows reducer_rows_;
     std::vector<std::uint32_t> heap_;    // columns, largest monomial on top
     std::vector<std::uint8_t> pending_;  // the column is in heap_
+    std::vector<std::uint32_t> fresh_;   // columns a step made pending (reduce_loaded)
     // The columns in the monomial order, and for each a rank that grows with it, so that the
     // heap compares two integers instead of two monomials. New ranks go halfway between their
     // neighbours' (all are renumbered when there is no room): the heap stays valid because

@@ -102,6 +102,49 @@ TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
             lanes::add_scaled_rows(table.data(), columns.data(), 0, nullptr, b.data(),
                                    quotients.data(), primes);
             ASSERT_EQ(table, expected) << kernel << " lanes " << width;
+            // The bounded kernel: the same residues, and beside them every touched column's
+            // bound raised by its term (log_bound's sum), the highest of them, and the columns
+            // not pending before listed in term order and marked.
+            std::vector<std::int64_t> bound(50), term(20);
+            std::vector<std::uint8_t> pending(50);
+            for (std::size_t c = 0; c < 50; ++c) {
+                bound[c] = c % 7 == 0 ? lb::kZero : static_cast<std::int64_t>(rng() % 40000);
+                pending[c] = static_cast<std::uint8_t>(rng() % 2);
+            }
+            for (std::int64_t& u : term) {
+                u = static_cast<std::int64_t>(rng() % 30000);
+            }
+            const std::int64_t offset = 1234, highest_before = 20000;
+            std::vector<std::int64_t> expected_bound = bound;
+            std::vector<std::uint8_t> expected_pending = pending;
+            std::vector<std::uint32_t> expected_fresh;
+            std::int64_t expected_highest = highest_before;
+            for (std::size_t t = 0; t < 20; ++t) {
+                const std::uint32_t c = columns[t];
+                expected_bound[c] = lb::of_sum(expected_bound[c], offset + term[t]);
+                expected_highest = std::max(expected_highest, expected_bound[c]);
+                if (expected_pending[c] == 0) {
+                    expected_pending[c] = 1;
+                    expected_fresh.push_back(c);
+                }
+                for (std::size_t l = 0; l < width; ++l) {
+                    const std::uint64_t p = primes.prime(l);
+                    std::uint32_t& v = expected[c * width + l];
+                    v = static_cast<std::uint32_t>(
+                        (v + static_cast<std::uint64_t>(b[l]) * rows[t * width + l] % p) % p);
+                }
+            }
+            std::vector<std::uint32_t> fresh(20);
+            lanes::ColumnBounds bounds{bound.data(), term.data(), offset,        pending.data(),
+                                       fresh.data(), 0,           highest_before};
+            lanes::add_scaled_rows_bounded(table.data(), columns.data(), 20, rows.data(), b.data(),
+                                           quotients.data(), primes, bounds);
+            ASSERT_EQ(table, expected) << kernel << " lanes " << width;
+            ASSERT_EQ(bound, expected_bound) << kernel << " lanes " << width;
+            ASSERT_EQ(pending, expected_pending) << kernel << " lanes " << width;
+            fresh.resize(bounds.fresh_count);
+            ASSERT_EQ(fresh, expected_fresh) << kernel << " lanes " << width;
+            ASSERT_EQ(bounds.highest, expected_highest) << kernel << " lanes " << width;
             // Digits of any 32 bits, powers below p.
             std::vector<std::uint32_t> halves(6), powers(6 * width);
             random_residues(halves, false);
