@@ -234,41 +234,54 @@ void GeoBucket::subtract_multiple_words(const Integer& b, const std::uint64_t* m
     fmpz_neg(negated_.get(), b.get());
     std::size_t i = target.head, j = from;
     const std::size_t i_end = target.count, j_end = g.size();
-    words.multiply(g.monomial(j, w), m, product);
-    while (i < i_end || j < j_end) {
-        int order;
-        if (j == j_end) {
-            order = 1;
-        } else if (i == i_end) {
-            order = -1;
-        } else {
-            order = words.compare(t_monomials + i * w, product);
-        }
-        if (order > 0) {
-            out_coefficients[n] = t_coefficients[i];
-            words.copy(t_monomials + i * w, out_monomials + n * w);
-            ++n;
-            ++i;
-            continue;
-        }
-        if (order < 0) {
-            out_coefficients[n] = 0;
-            mul(&out_coefficients[n], g.coefficients[j].get(), negated_.get());
-            words.copy(product, out_monomials + n * w);
-            ++n;
-        } else {
-            fmpz* c = &t_coefficients[i];
-            submul(c, g.coefficients[j].get(), b.get());
-            if (!fmpz_is_zero(c)) {
-                out_coefficients[n] = *c;
+    try {
+        words.multiply(g.monomial(j, w), m, product);
+        while (i < i_end || j < j_end) {
+            int order;
+            if (j == j_end) {
+                order = 1;
+            } else if (i == i_end) {
+                order = -1;
+            } else {
+                order = words.compare(t_monomials + i * w, product);
+            }
+            if (order > 0) {
+                out_coefficients[n] = t_coefficients[i];
+                words.copy(t_monomials + i * w, out_monomials + n * w);
+                ++n;
+                ++i;
+                continue;
+            }
+            if (order < 0) {
+                out_coefficients[n] = 0;
+                mul(&out_coefficients[n], g.coefficients[j].get(), negated_.get());
                 words.copy(product, out_monomials + n * w);
                 ++n;
+            } else {
+                fmpz* c = &t_coefficients[i];
+                submul(c, g.coefficients[j].get(), b.get());
+                if (!fmpz_is_zero(c)) {
+                    out_coefficients[n] = *c;
+                    words.copy(product, out_monomials + n * w);
+                    ++n;
+                }
+                ++i;
             }
-            ++i;
+            if (++j < j_end) {
+                words.multiply(g.monomial(j, w), m, product);
+            }
         }
-        if (++j < j_end) {
-            words.multiply(g.monomial(j, w), m, product);
+    } catch (...) {
+        // Only a product's exponents overflowing throws. The target still owns every term it
+        // had (those copied to `out` included); the products made so far belong to nobody.
+        for (std::size_t k = 0; k < n; ++k) {
+            if (COEFF_IS_MPZ(out_coefficients[k]) &&
+                std::find(t_coefficients + target.head, t_coefficients + i, out_coefficients[k]) ==
+                    t_coefficients + i) {
+                fmpz_clear(&out_coefficients[k]);
+            }
         }
+        throw;
     }
     out.count = n;
     target.forget();
