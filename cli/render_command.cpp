@@ -8,6 +8,8 @@
 #include <optional>
 #include <sstream>
 
+#include <tbb/global_control.h>
+
 #include "algebra/error.h"
 #include "cli/choices.h"
 #include "cli/command_support.h"
@@ -309,8 +311,16 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     register_partial_file(partial, args.output);
     std::vector<algebra::CompiledPolynomial> compiled;
     Extents extents;
+    // --threads (or the scene file's threads) bounds every parallel phase of the command: the
+    // extent estimate and the image encoding as well as the frames' rows, which alone took it
+    // from ExecutionSettings::threads.
+    std::optional<tbb::global_control> thread_limit;
     try {
         scene = build_scene(args, deadline);
+        if (scene.options.threads > 0) {
+            thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                                 static_cast<std::size_t>(scene.options.threads));
+        }
         for (const std::string& name : args.aovs) {
             aovs.push_back(render::parse_aov(name));
         }

@@ -43,16 +43,15 @@ WriteFunction image_writer() {
 }
 #endif
 
-// The 8-bit sRGB codes of the linear colours, rows side by side: done on one thread after the
-// frame, the conversion was 2–3 % of a 512² low-degree render's CPU time, all of it on the
-// whole command's critical path.
+// The 8-bit sRGB codes of the linear colours, in blocks side by side: done on one thread after
+// the frame, the conversion was 2–3 % of a 512² low-degree render's CPU time, all of it on the
+// whole command's critical path. (`locus render --threads N` bounds this too: the command caps
+// TBB's parallelism for all its phases.)
 std::vector<std::uint8_t> srgb8_of(const RenderedImage& image) {
     std::vector<std::uint8_t> srgb(image.color.size());
-    const std::size_t row = 3 * static_cast<std::size_t>(image.width);
-    const std::size_t rows = row == 0 ? 0 : image.color.size() / row;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 16),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, srgb.size(), std::size_t{1} << 14),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t k = range.begin() * row; k < range.end() * row; ++k) {
+                          for (std::size_t k = range.begin(); k < range.end(); ++k) {
                               srgb[k] = to_srgb8(image.color[k]);
                           }
                       });

@@ -372,7 +372,9 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
         }
         lanes::shoup_quotients(quotients_.data(), multiplier_lanes_.data(), primes);
         // The residues and the bounds in one pass over the terms.
-        fresh_.resize(length);
+        if (fresh_.size() < length) {
+            fresh_.resize(length);  // grown only: a resize per step zero-filled what it regrew
+        }
         lanes::ColumnBounds raise{bound_.data(),   e.term_bounds.data(), relative_b,
                                   pending_.data(), fresh_.data(),        0,
                                   highest_bound_};
