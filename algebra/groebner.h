@@ -59,7 +59,10 @@ struct GroebnerRequest {
 
     // The modular algorithm over Q (also as the automatic route's second stage).
     bool certify = true;  // false: the lifted basis is probabilistic
-    int threads = 1;      // for the modular route (replays, certification; beside auto's probe)
+    // The signature algorithm (and auto's probe) attempts the signatures of a degree side by
+    // side; the modular one runs its replays, certification and F4 rows on them. Buchberger's
+    // algorithm is sequential.
+    int threads = 1;
 };
 
 struct GroebnerAnswer {

@@ -98,9 +98,9 @@ struct GroebnerOptions {
     // Called after every S-pair with the state so far (for progress bars; throttle inside).
     std::function<void(const GroebnerProgress&)> progress;
     // For the multi-modular route of groebner_automatic: certify its result (false: the result
-    // is probabilistic), on this many threads (replays side by side, the certification's
-    // S-pairs; with two or more, the route starts beside auto's probe). Buchberger and the
-    // signature algorithm themselves are sequential.
+    // is probabilistic). `threads`: the signature algorithm attempts the signatures of a degree
+    // side by side (signature_groebner.h), the modular route runs its replays and certification
+    // on them; Buchberger's algorithm is sequential.
     bool certify = true;
     int threads = 1;
 };

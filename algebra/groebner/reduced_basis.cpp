@@ -2,6 +2,12 @@
 // reduced basis is unique, so reducing every tail against the *original* other elements is
 // enough: leading monomials never change, and tail irreducibility depends on them only.
 #include <algorithm>
+#include <memory>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "algebra/assert.h"
 #include "algebra/groebner/buchberger.h"
@@ -11,7 +17,8 @@ namespace locus::algebra {
 namespace detail {
 
 std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
-                                           const MonomialLayout& layout, ReductionCounts& counts) {
+                                           const MonomialLayout& layout, ReductionCounts& counts,
+                                           int threads) {
     const std::size_t w = layout.words();
     // Minimal basis: an element goes when another (non-removed) one's leading monomial divides
     // its own; among equal leading monomials only the first stays.
@@ -34,15 +41,56 @@ std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
             }
         }
     }
-    Reducer reducer(layout);
-    std::vector<IntegerPolynomial> reduced;
+    // Each tail is reduced by the others, none of which changes meanwhile: the reductions are
+    // independent, and with threads > 1 run side by side (an admission that refuses the
+    // element itself stands for marking it redundant, with the same choice of reducers).
+    std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < basis.size(); ++i) {
-        if (basis[i].redundant) {
-            continue;
+        if (!basis[i].redundant) {
+            kept.push_back(i);
         }
-        basis[i].redundant = true;  // reduce by the others only
-        reduced.push_back(reducer.reduce(basis[i].poly, basis, counts));
-        basis[i].redundant = false;
+    }
+    std::vector<IntegerPolynomial> reduced(kept.size());
+    // Below a few dozen elements threads cost more to start than the reductions take.
+    constexpr std::size_t kLeastInParallel = 32;
+    if (threads <= 1 || kept.size() < kLeastInParallel) {
+        Reducer reducer(layout);
+        for (std::size_t k = 0; k < kept.size(); ++k) {
+            const std::size_t i = kept[k];
+            basis[i].redundant = true;  // reduce by the others only
+            reduced[k] = reducer.reduce(basis[i].poly, basis, counts);
+            basis[i].redundant = false;
+        }
+    } else {
+        struct AllBut final : ReducerAdmission {
+            explicit AllBut(std::size_t element) : excluded(element) {}
+            bool admits(std::size_t element, const std::uint64_t*) const override {
+                return element != excluded;
+            }
+            std::size_t excluded;
+        };
+        struct Worker {
+            explicit Worker(const MonomialLayout& l) : reducer(l) {}
+            Reducer reducer;
+            ReductionCounts counts;
+        };
+        tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers(
+            [&layout] { return std::make_unique<Worker>(layout); });
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kept.size(), 1),
+                              [&](const tbb::blocked_range<std::size_t>& range) {
+                                  Worker& worker = *workers.local();
+                                  for (std::size_t k = range.begin(); k != range.end(); ++k) {
+                                      const AllBut others(kept[k]);
+                                      reduced[k] = worker.reducer.reduce(
+                                          basis[kept[k]].poly, basis, worker.counts, true, &others);
+                                  }
+                              });
+        });
+        for (const std::unique_ptr<Worker>& worker : workers) {
+            counts.steps += worker->counts.steps;
+        }
     }
     std::sort(reduced.begin(), reduced.end(),
               [&](const IntegerPolynomial& a, const IntegerPolynomial& b) {

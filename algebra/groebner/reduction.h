@@ -125,8 +125,10 @@ class Reducer {
 
 // Reduced-basis step (reduced_basis.cpp): drops elements whose leading monomial is divisible by
 // another's (of equal ones, the first is kept), reduces each tail by the others, and returns
-// the survivors sorted by leading monomial ascending. Precondition: a Gröbner basis.
+// the survivors sorted by leading monomial ascending, on `threads` threads. Precondition: a
+// Gröbner basis.
 std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
-                                           const MonomialLayout& layout, ReductionCounts& counts);
+                                           const MonomialLayout& layout, ReductionCounts& counts,
+                                           int threads = 1);
 
 }  // namespace locus::algebra::detail

@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <deque>
-#include <future>
 #include <memory>
 #include <mutex>
 #include <random>
 #include <string>
 
-#include <flint/flint.h>
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
 #include <flint/ulong_extras.h>
@@ -314,7 +312,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     const MonomialLayout& layout = ring->layout();
     modular::F4Options f4_options;
     f4_options.deadline = options.deadline;
-    f4_options.threads = [&options] { return options.threads_now(); };
+    f4_options.threads = [&options] { return std::max(1, options.threads); };
     if (options.progress) {
         // F4's steps on a prime (the first prime's run is the long one before any replay).
         f4_options.progress = [&](std::size_t steps, std::size_t basis_size) {
@@ -402,9 +400,9 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             // At most four batches at once: each holds a basis a prime until the lift has
             // seen it (cyclic-8: two batches, 0.55 GB).
             const std::size_t parallel =
-                batch > 1
-                    ? std::min<std::size_t>(4, static_cast<std::size_t>(options.threads_now()))
-                    : 1;
+                batch > 1 ? std::min<std::size_t>(
+                                4, static_cast<std::size_t>(std::max(1, options.threads)))
+                          : 1;
             while (ready.size() < batch * parallel) {
                 std::optional<Prepared> item = next_usable();
                 if (!item) {
@@ -524,7 +522,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             }
         }
         if (group->candidate && group->primes() + 1 > largest_other &&
-            agrees_modulo(*group->candidate, basis, field, options.threads_now())) {
+            agrees_modulo(*group->candidate, basis, field, std::max(1, options.threads))) {
             s.lift_seconds += seconds_since(lift_start);
             std::vector<Polynomial> candidate = *group->candidate;
             if (options.certify) {
@@ -540,8 +538,8 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                         options.progress(report);
                     };
                 }
-                const BasisCheck check = certify_groebner_basis(candidate, inputs, options.deadline,
-                                                                options.threads_now(), certifying);
+                const BasisCheck check = certify_groebner_basis(
+                    candidate, inputs, options.deadline, std::max(1, options.threads), certifying);
                 s.certify_seconds += seconds_since(certify_start);
                 s.certification += check.work;
                 if (!check.ok) {
@@ -571,8 +569,9 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             result.stats.zero_reductions = s.f4.zero_rows;
             return result;
         }
-        add_to_group(*group, basis, p, layout, options.threads_now());
-        group->candidate = reconstruct(*group, ring, options.threads_now(), options.deadline);
+        add_to_group(*group, basis, p, layout, std::max(1, options.threads));
+        group->candidate =
+            reconstruct(*group, ring, std::max(1, options.threads), options.deadline);
         if (options.progress) {
             GroebnerProgress progress;
             progress.stage = GroebnerProgress::Stage::primes;
@@ -654,86 +653,6 @@ double bezout_bound(std::span<const Polynomial> generators) {
 // has no FGLM). katsura5_lex (80) still probes and goes modular (4.1 ms; Singular 5.5 ms): shape
 // does not separate it from cyclic4_lex, nor growth from katsura4_lex (64 bits within 256 elements
 // would send katsura4_lex modular, 0.3 → 0.67 ms).
-namespace {
-
-// The modular route run on a thread of its own, cancelled (and waited for) on destruction
-// unless its result was taken. It polls a deadline of its own (so that it can be cancelled
-// alone); the caller's deadline — and a cancellation of it, which the Python bindings make on
-// Ctrl-C — reaches it through `result`, which watches the caller's deadline while it waits.
-class SpeculativeModular {
-  public:
-    SpeculativeModular(std::span<const Polynomial> generators, ModularOptions options)
-        : callers_deadline_(options.deadline) {
-        deadline_ =
-            cancellable_deadline(options.deadline.value_or(std::chrono::steady_clock::now() +
-                                                           std::chrono::hours(24 * 365)),
-                                 &cancelled_);
-        options.deadline = deadline_;
-        try {
-            run_ = std::async(
-                std::launch::async,
-                [this, inputs = std::vector<Polynomial>(generators.begin(), generators.end()),
-                 options] {
-                    // FLINT keeps caches per thread (about 220 kB once big integers were
-                    // used) that only the thread itself can release, before it ends: without
-                    // this, every `auto` call that started the modular route leaked them (a
-                    // Python loop over katsura7 grew by 220 kB a call). Values made here and
-                    // cleared later by the caller are returned to FLINT's pages either way.
-                    struct ReleaseFlintCaches {
-                        ~ReleaseFlintCaches() { flint_cleanup(); }
-                    } release;
-                    return modular_groebner(inputs, options, &stats_);
-                });
-        } catch (...) {
-            forget_cancellable_deadline(deadline_);  // no thread: nothing polls the flag
-            throw;
-        }
-    }
-    ~SpeculativeModular() {
-        cancelled_ = true;
-        if (run_.valid()) {
-            try {
-                run_.get();
-            } catch (...) {  // NOLINT(bugprone-empty-catch): cancelled, its outcome unused
-            }
-        }
-        forget_cancellable_deadline(deadline_);
-    }
-    SpeculativeModular(const SpeculativeModular&) = delete;
-    SpeculativeModular& operator=(const SpeculativeModular&) = delete;
-
-    // Waits for the route's result (rethrowing what it threw, Timeout when the caller's
-    // deadline passed or was cancelled); the route's statistics either way.
-    GroebnerResult result(ModularStats* stats) {
-        while (run_.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
-            if (deadline_passed(callers_deadline_)) {
-                cancelled_ = true;  // the route stops at its next poll and throws Timeout
-            }
-        }
-        try {
-            GroebnerResult out = run_.get();
-            if (stats != nullptr) {
-                *stats = stats_;
-            }
-            return out;
-        } catch (...) {
-            if (stats != nullptr) {
-                *stats = stats_;
-            }
-            throw;
-        }
-    }
-
-  private:
-    std::optional<std::chrono::steady_clock::time_point> callers_deadline_;
-    std::atomic<bool> cancelled_{false};
-    std::chrono::steady_clock::time_point deadline_;
-    ModularStats stats_;
-    std::future<GroebnerResult> run_;
-};
-
-}  // namespace
-
 GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options, ModularStats* stats,
                                   bool* used_modular) {
@@ -775,29 +694,12 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     modular_options.threads = options.threads;
     modular_options.certify = options.certify;
     modular_options.progress = options.progress;
-    // Above the shape threshold the probe may take seconds before it hands over (cyclic-8:
-    // 1.7 s). With a second thread the modular route starts at once beside it, and is
-    // cancelled when the probe answers: the probe's outcome alone still decides which
-    // answer is returned, so the choice is the same on every run; only the waiting overlaps.
-    // While the probe runs it holds one thread: the route beside it runs on the others (with
-    // all of them it slowed eco-11's probe from 3.7 to 4.8 s on two cores).
+    // The probe runs on every thread given (the signature algorithm attempts the signatures
+    // of a degree side by side) and the modular route only once it has handed over. Starting
+    // the route beside the probe, as this did when the probe was sequential, saved at most the
+    // probe's time (cyclic-8's 0.032 s, every other suite case less) and cost the cases the
+    // probe answers a core: eco-10 on two threads took 0.33 s against 0.19 s without it.
     const auto start = std::chrono::steady_clock::now();
-    std::atomic<bool> probe_running{true};
-    std::optional<SpeculativeModular> ahead;
-    if (degree_order && shape > kModularShape && options.threads >= 2) {
-        ModularOptions beside = modular_options;
-        beside.one_thread_taken = &probe_running;
-        // The route reports only once the probe is over: the two do not share the callback.
-        if (options.progress) {
-            beside.progress = [&probe_running,
-                               progress = options.progress](const GroebnerProgress& p) {
-                if (!probe_running.load()) {
-                    progress(p);
-                }
-            };
-        }
-        ahead.emplace(generators, beside);
-    }
     std::string probe = "none: a square system of shape " +
                         std::to_string(static_cast<long>(shape)) + " under a non-degree order";
     if (skip_probe) {
@@ -809,7 +711,6 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     }
     const double probe_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    probe_running = false;
     // Stopped by the probe's budget or growth rule, not by the caller's own limits.
     const bool callers_limit =
         (options.max_basis_size != 0 && result.stats.max_basis_size > options.max_basis_size) ||
@@ -825,8 +726,7 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     if (used_modular != nullptr) {
         *used_modular = true;
     }
-    GroebnerResult modular =
-        ahead ? ahead->result(stats) : modular_groebner(generators, modular_options, stats);
+    GroebnerResult modular = modular_groebner(generators, modular_options, stats);
     if (stats != nullptr) {
         stats->probe = probe;
         stats->probe_seconds = skip_probe ? 0.0 : probe_seconds;

@@ -12,7 +12,6 @@
 #pragma once
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -42,17 +41,10 @@ struct ModularOptions {
     // Threads for the replays (batches of primes side by side) and the certification's S-pairs
     // (verify.h); 1 keeps everything on this thread.
     int threads = 1;
-    // While this flag is set, one of the threads is taken by other work (auto's probe runs
-    // beside the route): the route then runs on one thread fewer.
-    const std::atomic<bool>* one_thread_taken = nullptr;
     // Called after each F4 step on a prime, after every prime and, during the certification,
     // after S-pairs (from any of the threads, one call at a time); stage "F4", "primes" or
     // "certification" (GroebnerProgress).
     std::function<void(const GroebnerProgress&)> progress;
-    int threads_now() const {
-        const bool taken = one_thread_taken != nullptr && one_thread_taken->load();
-        return std::max(1, threads - (taken ? 1 : 0));
-    }
 };
 
 struct ModularStats {

@@ -127,10 +127,10 @@ TEST(GroebnerEntry, AlgorithmNamesRoundTrip) {
 namespace locus::algebra {
 namespace {
 
-// With two threads, above the shape threshold, the modular route starts beside the probe and is
-// cancelled when the probe answers: the route, and so the answer, are the probe's to decide as
-// on one thread (noon-7: signatures; cyclic-7: modular), and a caller's budget still stops it.
-TEST(GroebnerEntry, AutomaticRouteIsTheSameWithTheModularRouteBesideTheProbe) {
+// With two threads the probe attempts signatures side by side and the modular route runs its
+// primes side by side: the route, and so the answer, are the probe's to decide as on one thread
+// (noon-7: signatures; cyclic-7: modular), and a caller's budget still stops it.
+TEST(GroebnerEntry, AutomaticRouteIsTheSameOnTwoThreads) {
     for (const std::string name : {"noon7.ideal", "cyclic7.ideal"}) {
         const IdealFile ideal =
             parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/" + name));
@@ -162,9 +162,9 @@ TEST(GroebnerEntry, AutomaticRouteIsTheSameWithTheModularRouteBesideTheProbe) {
 }
 
 // A cancellation of the caller's deadline (what the Python bindings do on Ctrl-C) stops the
-// modular route started beside the probe, also after the probe has handed over to it: cyclic-8
-// hands over after about 0.3 s and the route then runs for seconds.
-TEST(GroebnerEntry, CancellingTheCallersDeadlineStopsTheRouteBesideTheProbe) {
+// modular route after the probe has handed over to it: cyclic-8 hands over within 0.05 s and
+// the route then runs for seconds.
+TEST(GroebnerEntry, CancellingTheCallersDeadlineStopsTheModularRoute) {
     const IdealFile c8 =
         parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic8.ideal"));
     std::atomic<bool> cancelled{false};
