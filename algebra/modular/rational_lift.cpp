@@ -16,8 +16,17 @@ PrimeSequence::PrimeSequence(Width width, std::vector<std::uint64_t> forced)
     : width_(width), forced_(std::move(forced)) {
     std::random_device entropy;
     const std::uint64_t random = (static_cast<std::uint64_t>(entropy()) << 32) | entropy();
-    last_ = width == Width::small ? (UWORD(1) << 31) - random % (UWORD(1) << 28)
-                                  : (UWORD(1) << 62) + random % (UWORD(1) << 58);
+    switch (width) {
+    case Width::small:
+        last_ = (UWORD(1) << 31) - random % (UWORD(1) << 28);
+        break;
+    case Width::wide:
+        last_ = (UWORD(1) << 62) + random % (UWORD(1) << 58);
+        break;
+    case Width::unreduced:
+        last_ = (UWORD(1) << 24) - random % (UWORD(1) << 21);
+        break;
+    }
 }
 
 std::uint64_t PrimeSequence::next() {
@@ -32,7 +41,7 @@ std::uint64_t PrimeSequence::next() {
         }
     }
     do {
-        if (width_ == Width::small) {
+        if (width_ != Width::wide) {
             last_ = previous_prime(static_cast<std::uint32_t>(last_));
         } else {
             last_ = n_nextprime(last_, 1);

@@ -41,14 +41,16 @@ namespace locus::algebra::modular {
 
 // Distinct primes for a lift. `small` ones (below 2³¹: F4's 32-bit data) come down from a
 // random point in [2³¹ − 2²⁸, 2³¹), `wide` ones (above 2⁶²: 64-bit kernels, half as many primes
-// for the same bits) go up from a random point in [2⁶², 2⁶² + 2⁵⁸). Random, because with a fixed
+// for the same bits) go up from a random point in [2⁶², 2⁶² + 2⁵⁸), `unreduced` ones (below
+// 2²⁴, where F4's row reductions sum products without reducing them on matrices of up to
+// 65 535 rows) come down from a random point in [2²⁴ − 2²¹, 2²⁴). Random, because with a fixed
 // sequence an input can be made on which the first primes are unlucky together (a coefficient
 // equal to the product of the first two, found by a review of the Gröbner route). `forced`
 // primes come first (tests); no prime is given twice, since a repeated prime would agree with
 // itself.
 class PrimeSequence {
   public:
-    enum class Width { small, wide };
+    enum class Width { small, wide, unreduced };
     explicit PrimeSequence(Width width, std::vector<std::uint64_t> forced = {});
     std::uint64_t next();
 

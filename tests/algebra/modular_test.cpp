@@ -384,6 +384,35 @@ TEST(Modular, LiftingNeedsFewerPrimesThanTheLargestRational) {
     }
 }
 
+// The first prime, whose F4 the others replay, is drawn below 2^24 (where the row reductions
+// sum without reducing), the others below 2^31; the lift mixes them. Forced primes still come
+// first (UnluckyPrimeIsDetectedAndSetAside).
+TEST(Modular, TheRecordedPrimeIsBelowTwoToThe24) {
+    for (const char* name : {"katsura8", "cyclic7"}) {
+        SCOPED_TRACE(name);
+        const IdealFile ideal = parse_ideal_file(
+            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        ModularOptions options;
+        options.threads = 1;
+        ModularStats stats;
+        const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
+        ASSERT_TRUE(stats.certified);
+        // The same basis from a recording on a 31-bit prime (forced).
+        ModularOptions forced = options;
+        forced.primes = {2147483629u};
+        ModularStats forced_stats;
+        EXPECT_EQ(r.basis, modular_groebner(ideal.generators, forced, &forced_stats).basis);
+        EXPECT_EQ(forced_stats.primes_used.front(), 2147483629u);
+        ASSERT_GE(stats.primes_used.size(), 3u);
+        EXPECT_LT(stats.primes_used.front(), 1u << 24);
+        EXPECT_GE(stats.primes_used.front(), (1u << 24) - (1u << 21) - 1000);
+        for (std::size_t i = 1; i < stats.primes_used.size(); ++i) {
+            EXPECT_GE(stats.primes_used[i], (1u << 31) - (1u << 28) - 100000);
+        }
+        EXPECT_EQ(stats.replayed, stats.primes_used.size() - 1);
+    }
+}
+
 // A coefficient with a small denominator is lifted as an integer over it (D·r = a/b with b
 // below 2^64, D = 1 here), which needs about half the primes of a rational reconstruction
 // (|n| and d both below √(M/2)): this basis has a³ − (N/3)·b with a 5 090-bit N, which took
