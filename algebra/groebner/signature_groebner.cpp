@@ -624,8 +624,9 @@ GroebnerResult SignatureRun::run(const GroebnerOptions& options, const RingPtr& 
         std::copy_n(taken.sig.data(), 2 * w_, target_.data());
         ++signatures_done;
         if (options.progress) {
-            options.progress({signatures_done, heap_.size(), basis_.size(),
-                              layout_.leading_weight(target_.data() + w_)});
+            // Queued: the heap and what is left of the batch.
+            options.progress({signatures_done, heap_.size() + (batch.size() - next_in_batch),
+                              basis_.size(), layout_.leading_weight(target_.data() + w_)});
         }
         Attempt a;
         try {
