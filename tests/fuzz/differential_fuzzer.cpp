@@ -2,10 +2,11 @@
 //  - parse → print → parse is a fixpoint (to_ideal_file of the reparsed ideal is the same text,
 //    orders included);
 //  - for tiny ideals (≤ 3 variables, ≤ 4 generators of degree ≤ 4), the reduced Gröbner bases
-//    of Buchberger's algorithm, the signature algorithm and the certified multi-modular F4
-//    agree (each is unique, so any difference is a bug in one of them); for a tiny ideal with a
-//    `characteristic:` line, the basis F4 computes modulo p passes the independent check
-//    modulo p (groebner/verify.h), which shares no code with F4.
+//    of Buchberger's algorithm, the signature algorithm (on one and two threads, with the same
+//    decisions) and the certified multi-modular F4 agree (each is unique, so any difference is
+//    a bug in one of them); for a tiny ideal with a `characteristic:` line, the basis F4
+//    computes modulo p passes the independent check modulo p (groebner/verify.h), which shares
+//    no code with F4.
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -81,6 +82,21 @@ void compare_algorithms(const locus::algebra::IdealFile& file, std::string_view 
     const std::string expected = text_of(by_buchberger.basis);
     if (text_of(signature.basis) != expected) {
         locus::fuzz::property_failed("Buchberger and the signature algorithm disagree", input);
+    }
+    // On two threads (batches of a degree attempted side by side) every decision is the
+    // sequential one: the same basis and the same counts of each criterion's skips.
+    locus::algebra::GroebnerOptions two_threads = options;
+    two_threads.threads = 2;
+    const auto parallel = locus::algebra::signature_groebner(file.generators, two_threads);
+    if (parallel.outcome == GroebnerOutcome::complete &&
+        (text_of(parallel.basis) != expected ||
+         parallel.stats.removed_by_syzygy != signature.stats.removed_by_syzygy ||
+         parallel.stats.removed_by_rewriting != signature.stats.removed_by_rewriting ||
+         parallel.stats.reductions != signature.stats.reductions ||
+         parallel.stats.zero_reductions != signature.stats.zero_reductions ||
+         parallel.stats.max_basis_size != signature.stats.max_basis_size)) {
+        locus::fuzz::property_failed("the signature algorithm decides otherwise on two threads",
+                                     input);
     }
     locus::algebra::ModularOptions modular_options;
     modular_options.deadline = deadline;
