@@ -98,6 +98,9 @@ def groebner(polys, vars=None, order=None, algorithm="auto", certify=True, timeo
     characteristic: 0 for Q, or a prime p < 2^31 for GF(p) (coefficients then in [0, p)).
     check: verify the answer independently (S-pairs and generators reduce to zero, reduced);
         a failure raises VerificationError.
+    threads: the signature algorithm attempts the signatures of a degree side by side, the
+        modular one runs its primes and certification on this many threads; the basis is the
+        same on any number.
     """
     if isinstance(polys, Ideal):
         if characteristic == 0:
