@@ -281,8 +281,9 @@ void add_groebner_command(CLI::App& app, CommandContext& context) {
                   "verify independently: generators and S-pairs reduce to zero, basis reduced");
     add_process_limit_options(cmd, args->limits);
     cmd->add_option("--threads", args->threads,
-                    "threads for the modular route — F4's linear algebra, the replays on other "
-                    "primes, the certification — and over GF(p) (0: all cores, the default; the "
+                    "threads for the signature algorithm (a degree's signatures side by side) "
+                    "and the modular route — F4's linear algebra, the replays on other primes, "
+                    "the certification — and over GF(p) (0: all cores, the default; the "
                     "benchmarks use 1)");
     cmd->callback([args, &context] { context.exit_code = run_groebner(*args, context.progress); });
 }
