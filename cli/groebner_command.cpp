@@ -28,7 +28,7 @@ struct GroebnerArgs {
     bool stats = false;
     bool check = false;
     ProcessLimitArgs limits;
-    int threads = 0;  // for the modular route and GF(p); 0 = all hardware threads
+    int threads = 0;  // signature batches, the modular route, GF(p); 0 = all hardware threads
 };
 
 void print_modular_stats(const algebra::ModularStats& s) {
