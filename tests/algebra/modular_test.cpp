@@ -360,15 +360,27 @@ TEST(Modular, LiftingOnTwoThreadsGivesTheBasisOfOne) {
 // largest coefficient alone could do with, which needs M > 2·|n|·d. katsura-8: its largest
 // coefficient has 317 bits of numerator and denominator, about 165 over its element's
 // denominator; cyclic-7: 576 and 293.
+// A bench system through the modular route on one thread, with its statistics.
+struct BenchRun {
+    IdealFile ideal;
+    GroebnerResult result;
+    ModularStats stats;
+};
+BenchRun modular_on_bench_case(const std::string& name) {
+    BenchRun run{
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal")),
+        {},
+        {}};
+    ModularOptions options;
+    options.threads = 1;
+    run.result = modular_groebner(run.ideal.generators, options, &run.stats);
+    return run;
+}
+
 TEST(Modular, LiftingNeedsFewerPrimesThanTheLargestRational) {
     for (const char* name : {"katsura8", "cyclic7"}) {
         SCOPED_TRACE(name);
-        const IdealFile ideal = parse_ideal_file(
-            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
-        ModularOptions options;
-        options.threads = 1;
-        ModularStats stats;
-        const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
+        const auto [ideal, r, stats] = modular_on_bench_case(name);
         ASSERT_TRUE(stats.certified);
         std::size_t largest = 0;
         for (const Polynomial& g : r.basis) {
@@ -390,15 +402,11 @@ TEST(Modular, LiftingNeedsFewerPrimesThanTheLargestRational) {
 TEST(Modular, TheRecordedPrimeIsBelowTwoToThe24) {
     for (const char* name : {"katsura8", "cyclic7"}) {
         SCOPED_TRACE(name);
-        const IdealFile ideal = parse_ideal_file(
-            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
-        ModularOptions options;
-        options.threads = 1;
-        ModularStats stats;
-        const GroebnerResult r = modular_groebner(ideal.generators, options, &stats);
+        const auto [ideal, r, stats] = modular_on_bench_case(name);
         ASSERT_TRUE(stats.certified);
         // The same basis from a recording on a 31-bit prime (forced).
-        ModularOptions forced = options;
+        ModularOptions forced;
+        forced.threads = 1;
         forced.primes = {2147483629u};
         ModularStats forced_stats;
         EXPECT_EQ(r.basis, modular_groebner(ideal.generators, forced, &forced_stats).basis);
