@@ -77,6 +77,9 @@ void print_stats(const algebra::GroebnerAnswer& answer, const algebra::PolyRing&
     if (s.algorithm == algebra::GroebnerAlgorithm::signature) {
         std::fprintf(stderr, "removed as syzygies: %zu\nremoved by rewriting: %zu\n",
                      s.removed_by_syzygy, s.removed_by_rewriting);
+        if (s.batched_signatures > 0) {
+            std::fprintf(stderr, "signatures attempted side by side: %zu\n", s.batched_signatures);
+        }
     } else {
         std::fprintf(stderr, "removed by product criterion: %zu\nremoved by chain criterion: %zu\n",
                      s.removed_by_product, s.removed_by_chain);

@@ -62,6 +62,8 @@ struct GroebnerStats {
     std::size_t zero_reductions = 0;  // of which reduced to zero
     std::size_t reduction_steps = 0;  // single a·p − b·m·g steps
     std::size_t max_basis_size = 0;   // largest intermediate basis
+    // signature_groebner on several threads: signatures attempted side by side in batches.
+    std::size_t batched_signatures = 0;
     double seconds = 0;
 };
 

@@ -23,6 +23,7 @@
 //     GroebnerResult r = signature_groebner(generators);  // the same basis as buchberger()
 #pragma once
 
+#include <cstddef>
 #include <span>
 
 #include "algebra/groebner/buchberger.h"
@@ -50,24 +51,30 @@ enum class SignatureOrder {
 //   - progress reports signatures: pairs_done the signatures taken, pairs_left the S-pairs still
 //     queued, current_sugar the first-row degree of the signature's comparison monomial;
 //   - selection has no meaning (signatures fix the order of the work) and is ignored;
-//   - with threads > 1 the queued signatures of the least degree (up to 256) are attempted side
-//     by side on the basis as it is, then taken in order, each checked again and its reduction
-//     continued by the elements added since. The basis is the same as on one thread; the work
-//     differs a little (reduction_steps counts every step made, those of attempts later found
-//     to be skipped included: eco-10 241 005 on two threads against 233 631), and is the same
-//     on every run with the same number of threads. max_reduction_steps is still checked
-//     between signatures, so a batch's attempts can pass it by their own steps (`auto`'s
-//     probe on cyclic-8: 10 363 steps on two threads against 8 099, stopping at the same
-//     element); the deadline is polled inside every attempt.
+//   - with threads > 1 (after `steps_before_batches` reduction steps) the queued signatures of
+//     the least degree (up to 256) are attempted side by side on the basis as it is, then taken in
+//     order, each checked again and its reduction continued by the elements added since. The basis
+//     is the same as on one thread; the work differs a little (reduction_steps counts every step
+//     made, those of attempts later found to be skipped included: eco-10 241 005 on two threads
+//     against 233 631), and is the same on every run with the same number of threads.
+//     max_reduction_steps is still checked between signatures, so a batch's attempts can pass it by
+//     their own steps (`auto`'s probe on cyclic-8: 10 363 steps on two threads against 8 099,
+//     stopping at the same element); the deadline is polled inside every attempt.
 // In the statistics, pairs_created counts the S-pairs formed (not those of equal signatures),
 // removed_by_syzygy those skipped by the syzygy criterion, removed_by_rewriting those that share
 // a signature with another and the signatures skipped by the singular criterion; reductions
 // counts the generators' own reductions as well as the S-pairs'. Throws MixedRings as buchberger()
 // does, and ExponentOverflow also when a signature leaves the packed range (signatures can
 // exceed the polynomials' degrees; see signature_groebner_or_buchberger).
+// With threads > 1 the batches begin once this many reduction steps are made: a smaller run
+// is over in milliseconds, less than starting the threads costs (eco-7 on two threads took
+// 1.9 ms against 1.1 without it). The tests lower it to reach the batches on small systems.
+inline constexpr std::size_t kStepsBeforeBatches = 20000;
+
 GroebnerResult signature_groebner(std::span<const Polynomial> generators,
                                   const GroebnerOptions& options = {},
-                                  SignatureOrder order = SignatureOrder::schreyer);
+                                  SignatureOrder order = SignatureOrder::schreyer,
+                                  std::size_t steps_before_batches = kStepsBeforeBatches);
 
 // signature_groebner, and buchberger() where a signature leaves the packed range
 // (ExponentOverflow), which Buchberger's lcms of leading monomials may not. The entry point of

@@ -34,6 +34,8 @@ constexpr SignatureOrder kOrders[] = {SignatureOrder::schreyer, SignatureOrder::
 
 class SignatureKnown : public ::testing::TestWithParam<std::string> {};
 
+// The tests reach the batches of two threads from the first step (signature_groebner's last
+// argument), on systems far smaller than the default threshold lets through.
 GroebnerOptions on_threads(int threads) {
     GroebnerOptions options;
     options.threads = threads;
@@ -47,7 +49,7 @@ TEST_P(SignatureKnown, MatchesExpectedBasisUnderBothOrdersOnOneAndTwoThreads) {
         for (const int threads : {1, 2}) {
             SCOPED_TRACE(std::string(order_name(order)) + ", threads " + std::to_string(threads));
             const GroebnerResult r =
-                signature_groebner(ideal.generators, on_threads(threads), order);
+                signature_groebner(ideal.generators, on_threads(threads), order, 0);
             ASSERT_EQ(r.outcome, GroebnerOutcome::complete);
             EXPECT_EQ(normalized(r.basis, *ideal.ring), test::read_text(base + ".expected"));
             EXPECT_TRUE(is_reduced(r.basis));
@@ -69,7 +71,7 @@ TEST(SignatureOracle, AgreesWithSingularOnRandomIdealsUnderBothOrdersOnOneAndTwo
                 SCOPED_TRACE(std::string(order_name(order)) + ", threads " +
                              std::to_string(threads));
                 const GroebnerResult r =
-                    signature_groebner(file.generators, on_threads(threads), order);
+                    signature_groebner(file.generators, on_threads(threads), order, 0);
                 EXPECT_EQ(r.outcome, GroebnerOutcome::complete);
                 EXPECT_EQ(normalized(r.basis, *file.ring), c.expected);
             }
@@ -161,7 +163,8 @@ TEST(SignatureProperties, EqualsBuchbergerWhateverTheGeneratorOrder) {
             for (const int threads : {1, 2}) {
                 SCOPED_TRACE(std::string(order_name(order)) + ", threads " +
                              std::to_string(threads));
-                const GroebnerResult r = signature_groebner(shuffled, on_threads(threads), order);
+                const GroebnerResult r =
+                    signature_groebner(shuffled, on_threads(threads), order, 0);
                 ASSERT_EQ(r.outcome, GroebnerOutcome::complete);
                 EXPECT_EQ(r.basis, expected.basis);
             }
@@ -181,16 +184,19 @@ TEST(SignatureProperties, EqualsBuchbergerWhateverTheGeneratorOrder) {
 // lex (the batches share the first variable's exponent) the batch's elements do change which
 // element's multiple is taken: 14 times on katsura5_lex, 23 on cyclic5_lex.
 TEST(SignatureParallel, MakesTheSequentialDecisionsOnTwoThreads) {
-    for (const std::string name : {"eco7.ideal", "katsura6.ideal", "cyclic6.ideal", "noon5.ideal",
+    for (const std::string name : {"eco7.ideal", "katsura7.ideal", "cyclic6.ideal", "noon5.ideal",
                                    "katsura5_lex.ideal", "cyclic5_lex.ideal"}) {
         SCOPED_TRACE(name);
         const IdealFile ideal =
             parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/" + name));
         for (const SignatureOrder order : kOrders) {
             SCOPED_TRACE(order_name(order));
-            const GroebnerResult one = signature_groebner(ideal.generators, on_threads(1), order);
-            const GroebnerResult two = signature_groebner(ideal.generators, on_threads(2), order);
-            const GroebnerResult again = signature_groebner(ideal.generators, on_threads(2), order);
+            const GroebnerResult one =
+                signature_groebner(ideal.generators, on_threads(1), order, 0);
+            const GroebnerResult two =
+                signature_groebner(ideal.generators, on_threads(2), order, 0);
+            const GroebnerResult again =
+                signature_groebner(ideal.generators, on_threads(2), order, 0);
             ASSERT_EQ(one.outcome, GroebnerOutcome::complete);
             ASSERT_EQ(two.outcome, GroebnerOutcome::complete);
             EXPECT_EQ(two.basis, one.basis);
@@ -200,10 +206,34 @@ TEST(SignatureParallel, MakesTheSequentialDecisionsOnTwoThreads) {
             EXPECT_EQ(two.stats.reductions, one.stats.reductions);
             EXPECT_EQ(two.stats.zero_reductions, one.stats.zero_reductions);
             EXPECT_EQ(two.stats.max_basis_size, one.stats.max_basis_size);
+            EXPECT_GT(two.stats.batched_signatures, 0u);  // the batches ran
             EXPECT_EQ(again.basis, two.basis);
             EXPECT_EQ(again.stats.reduction_steps, two.stats.reduction_steps);
         }
     }
+}
+
+// By default a run takes the batches only after kStepsBeforeBatches steps: eco7 (about 2 700)
+// runs on one thread; noon7 (about 47 000) reaches them.
+TEST(SignatureParallel, SmallRunsStayOnOneThreadByDefault) {
+    for (const std::string name : {"eco7.ideal", "noon7.ideal"}) {
+        SCOPED_TRACE(name);
+        const IdealFile ideal =
+            parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/" + name));
+        const GroebnerResult one = signature_groebner(ideal.generators, on_threads(1));
+        const GroebnerResult two = signature_groebner(ideal.generators, on_threads(2));
+        EXPECT_EQ(two.basis, one.basis);
+        EXPECT_EQ(one.stats.batched_signatures, 0u);
+        EXPECT_EQ(two.stats.batched_signatures > 0,
+                  one.stats.reduction_steps >= kStepsBeforeBatches);
+        EXPECT_EQ(two.stats.batched_signatures > 0, name == "noon7.ideal");
+    }
+    // Forced from the first step, eco7 takes batches too.
+    const IdealFile eco7 =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/eco7.ideal"));
+    EXPECT_GT(signature_groebner(eco7.generators, on_threads(2), SignatureOrder::schreyer, 0)
+                  .stats.batched_signatures,
+              0u);
 }
 
 // A deadline stops a run on two threads promptly, in the batches attempted side by side (most

@@ -87,7 +87,8 @@ void compare_algorithms(const locus::algebra::IdealFile& file, std::string_view 
     // sequential one: the same basis and the same counts of each criterion's skips.
     locus::algebra::GroebnerOptions two_threads = options;
     two_threads.threads = 2;
-    const auto parallel = locus::algebra::signature_groebner(file.generators, two_threads);
+    const auto parallel = locus::algebra::signature_groebner(
+        file.generators, two_threads, locus::algebra::SignatureOrder::schreyer, 0);
     if (parallel.outcome == GroebnerOutcome::complete &&
         (text_of(parallel.basis) != expected ||
          parallel.stats.removed_by_syzygy != signature.stats.removed_by_syzygy ||
