@@ -61,7 +61,7 @@ GroebnerAnswer modulo_prime(std::span<const Polynomial> generators,
     answer.certified = false;
     modular::F4Options f4_options;
     f4_options.deadline = request.deadline;
-    f4_options.threads = [threads = request.threads] { return threads; };
+    f4_options.threads = request.threads;
     modular::F4Stats f4_stats;
     const auto start = Clock::now();
     try {

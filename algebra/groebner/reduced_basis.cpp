@@ -41,34 +41,35 @@ std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
             }
         }
     }
-    // Each tail is reduced by the others, none of which changes meanwhile: the reductions are
-    // independent, and with threads > 1 run side by side (an admission that refuses the
-    // element itself stands for marking it redundant, with the same choice of reducers).
+    // Each tail is reduced by the others, none of which changes meanwhile: an admission that
+    // refuses the element itself leaves the choice of reducers what it is among the others, and
+    // the reductions are independent, so with threads > 1 they run side by side.
     std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < basis.size(); ++i) {
         if (!basis[i].redundant) {
             kept.push_back(i);
         }
     }
+    struct AllBut final : ReducerAdmission {
+        explicit AllBut(std::size_t element) : excluded(element) {}
+        bool admits(std::size_t element, const std::uint64_t*) const override {
+            return element != excluded;
+        }
+        std::size_t excluded;
+    };
     std::vector<IntegerPolynomial> reduced(kept.size());
+    const auto reduce_tail = [&](Reducer& reducer, ReductionCounts& steps, std::size_t k) {
+        const AllBut others(kept[k]);
+        reduced[k] = reducer.reduce(basis[kept[k]].poly, basis, steps, true, &others);
+    };
     // Below a few dozen elements threads cost more to start than the reductions take.
     constexpr std::size_t kLeastInParallel = 32;
     if (threads <= 1 || kept.size() < kLeastInParallel) {
         Reducer reducer(layout);
         for (std::size_t k = 0; k < kept.size(); ++k) {
-            const std::size_t i = kept[k];
-            basis[i].redundant = true;  // reduce by the others only
-            reduced[k] = reducer.reduce(basis[i].poly, basis, counts);
-            basis[i].redundant = false;
+            reduce_tail(reducer, counts, k);
         }
     } else {
-        struct AllBut final : ReducerAdmission {
-            explicit AllBut(std::size_t element) : excluded(element) {}
-            bool admits(std::size_t element, const std::uint64_t*) const override {
-                return element != excluded;
-            }
-            std::size_t excluded;
-        };
         struct Worker {
             explicit Worker(const MonomialLayout& l) : reducer(l) {}
             Reducer reducer;
@@ -82,9 +83,7 @@ std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
                               [&](const tbb::blocked_range<std::size_t>& range) {
                                   Worker& worker = *workers.local();
                                   for (std::size_t k = range.begin(); k != range.end(); ++k) {
-                                      const AllBut others(kept[k]);
-                                      reduced[k] = worker.reducer.reduce(
-                                          basis[kept[k]].poly, basis, worker.counts, true, &others);
+                                      reduce_tail(worker.reducer, worker.counts, k);
                                   }
                               });
         });

@@ -89,7 +89,6 @@ class SignatureRun {
           generators_(std::move(generators)),
           elements_of_index_(generators_.size()),
           syzygies_(generators_.size()),
-          product_(w_),
           target_(2 * w_),
           candidate_(2 * w_),
           other_(2 * w_),
@@ -177,6 +176,11 @@ class SignatureRun {
     // Whether some multiple of an element that `admission` admits has leading monomial m.
     bool has_regular_reducer(const std::uint64_t* m, const Admission& admission,
                              Workspace& ws) const;
+    // The singular criterion for the multiple of `element` into signature `sig`: no element
+    // that `admission` admits has a multiple with its leading monomial. Leaves the multiplier
+    // in ws.multiplier (and the leading monomial in ws.lead).
+    bool singular(std::uint32_t element, const std::uint64_t* sig, const Admission& admission,
+                  Workspace& ws) const;
     // The criteria and the reduction for signature (index, sig) on the basis as it is.
     Attempt attempt(std::uint32_t index, const std::uint64_t* sig, Workspace& ws) const;
     // Whether an element from `from` on reduces a term of h by a multiple `admission` admits.
@@ -197,6 +201,8 @@ class SignatureRun {
     QueuedPair pop();
     // The least queued signature and every pair that reaches it.
     Taken take();
+    // Takes the queued pairs of `taken`'s signature off the queue, counting them as reaching it.
+    void take_equal(Taken& taken);
     // The next signatures of the least degree (at most `most`), each attempted on the basis
     // as it is, side by side on `threads` threads.
     std::vector<Taken> take_batch(std::size_t most, int threads, const GroebnerOptions& options);
@@ -244,7 +250,7 @@ class SignatureRun {
 
     // The signature of the element being added (add_element reads it) and scratch monomials.
     std::uint32_t target_index_ = 0;
-    std::vector<std::uint64_t> product_, target_, candidate_, other_, lcm_, multiplier_;
+    std::vector<std::uint64_t> target_, candidate_, other_, lcm_, multiplier_;
 };
 
 bool SignatureRun::is_syzygy(std::uint32_t index, const std::uint64_t* t) const {
@@ -328,6 +334,13 @@ bool SignatureRun::has_regular_reducer(const std::uint64_t* m, const Admission& 
     return false;
 }
 
+bool SignatureRun::singular(std::uint32_t element, const std::uint64_t* sig,
+                            const Admission& admission, Workspace& ws) const {
+    layout_.divide(sig, t_of(element), ws.multiplier.data());
+    layout_.multiply(ws.multiplier.data(), lm_of(element), ws.lead.data());
+    return !has_regular_reducer(ws.lead.data(), admission, ws);
+}
+
 Attempt SignatureRun::attempt(std::uint32_t index, const std::uint64_t* sig, Workspace& ws) const {
     Attempt a;
     a.basis_size = basis_.size();
@@ -340,9 +353,7 @@ Attempt SignatureRun::attempt(std::uint32_t index, const std::uint64_t* sig, Wor
     const Admission admission(*this, index, sig + w_);
     IntegerPolynomial p;
     if (a.element) {
-        layout_.divide(sig, t_of(*a.element), ws.multiplier.data());
-        layout_.multiply(ws.multiplier.data(), lm_of(*a.element), ws.lead.data());
-        if (!has_regular_reducer(ws.lead.data(), admission, ws)) {
+        if (singular(*a.element, sig, admission, ws)) {
             a.kind = Attempt::Kind::singular;
             return a;
         }
@@ -396,9 +407,7 @@ Attempt SignatureRun::bring_up_to_date(Attempt ahead, std::uint32_t index, const
     }
     if (ahead.kind == Attempt::Kind::singular) {
         const Admission admission(*this, index, sig + w_);
-        layout_.divide(sig, t_of(*ahead.element), ws.multiplier.data());
-        layout_.multiply(ws.multiplier.data(), lm_of(*ahead.element), ws.lead.data());
-        return has_regular_reducer(ws.lead.data(), admission, ws) ? attempt(index, sig, ws) : ahead;
+        return singular(*ahead.element, sig, admission, ws) ? ahead : attempt(index, sig, ws);
     }
     if (!ahead.h.empty()) {
         // h is reduced by the elements it saw; only a term that a newer one reduces needs the
@@ -439,12 +448,16 @@ Taken SignatureRun::take() {
     const QueuedPair first = pop();
     taken.index = first.index;
     taken.sig.assign(pair_t(first), pair_t(first) + 2 * w_);
+    take_equal(taken);
+    return taken;
+}
+
+void SignatureRun::take_equal(Taken& taken) {
     while (!heap_.empty() && compare(heap_.front().index, pair_key(heap_.front()), taken.index,
                                      taken.sig.data() + w_) == 0) {
         pop();
         ++taken.reaching;
     }
-    return taken;
 }
 
 std::vector<Taken> SignatureRun::take_batch(std::size_t most, int threads,
@@ -614,11 +627,7 @@ GroebnerResult SignatureRun::run(const GroebnerOptions& options, const RingPtr& 
                  compare(batch[next_in_batch].index, batch[next_in_batch].sig.data() + w_,
                          heap_.front().index, pair_key(heap_.front())) <= 0)) {
                 taken = std::move(batch[next_in_batch++]);
-                while (!heap_.empty() && compare(heap_.front().index, pair_key(heap_.front()),
-                                                 taken.index, taken.sig.data() + w_) == 0) {
-                    pop();  // queued by an element of the batch: the same signature
-                    ++taken.reaching;
-                }
+                take_equal(taken);  // S-pairs the batch's elements queued with its signature
             } else {
                 taken = take();
             }

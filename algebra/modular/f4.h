@@ -39,10 +39,9 @@ struct F4Options {
     std::optional<std::chrono::steady_clock::time_point> deadline;
     // Called after each step of a run (not of a replay) with the steps done and the basis size.
     std::function<void(std::size_t steps, std::size_t basis_size)> progress;
-    // Threads for a step's linear algebra, asked at every step (the modular route's count
-    // changes when auto's probe stops); none or 1: this thread alone. The basis is the same
+    // Threads for a step's linear algebra; 1: this thread alone. The basis is the same
     // whatever the count.
-    std::function<int()> threads;
+    int threads = 1;
 };
 
 // What one run of F4 did, for repeating it modulo other primes (Traverso's tracing, as in

@@ -122,7 +122,7 @@ void F4Engine::reduce_rows(const std::vector<RowSpec>& rows,
                            std::size_t total_rows, std::vector<SparseRow>& fresh,
                            std::vector<std::size_t>& useful) {
     const std::size_t width = pivots.of_column.size();
-    const int threads = options_.threads ? std::max(1, options_.threads()) : 1;
+    const int threads = std::max(1, options_.threads);
     // Below this many rows a step is not worth the threads' start.
     constexpr std::size_t kRowsForThreads = 32;
     const bool side_by_side = threads > 1 && rows.size() >= kRowsForThreads;

@@ -293,6 +293,7 @@ GroebnerResult stopped_with_generators(std::span<const Polynomial> generators,
 GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                                          const ModularOptions& options, ModularStats& s) {
     const auto start = Clock::now();
+    const int threads = std::max(1, options.threads);
     std::vector<Polynomial> inputs;
     for (const Polynomial& f : generators) {
         if (!inputs.empty()) {
@@ -312,7 +313,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     const MonomialLayout& layout = ring->layout();
     modular::F4Options f4_options;
     f4_options.deadline = options.deadline;
-    f4_options.threads = [&options] { return std::max(1, options.threads); };
+    f4_options.threads = threads;
     if (options.progress) {
         // F4's steps on a prime (the first prime's run is the long one before any replay).
         f4_options.progress = [&](std::size_t steps, std::size_t basis_size) {
@@ -409,9 +410,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             // At most four batches at once: each holds a basis a prime until the lift has
             // seen it (cyclic-8: two batches, 0.55 GB).
             const std::size_t parallel =
-                batch > 1 ? std::min<std::size_t>(
-                                4, static_cast<std::size_t>(std::max(1, options.threads)))
-                          : 1;
+                batch > 1 ? std::min<std::size_t>(4, static_cast<std::size_t>(threads)) : 1;
             while (ready.size() < batch * parallel) {
                 std::optional<Prepared> item = next_usable();
                 if (!item) {
@@ -531,7 +530,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             }
         }
         if (group->candidate && group->primes() + 1 > largest_other &&
-            agrees_modulo(*group->candidate, basis, field, std::max(1, options.threads))) {
+            agrees_modulo(*group->candidate, basis, field, threads)) {
             s.lift_seconds += seconds_since(lift_start);
             std::vector<Polynomial> candidate = *group->candidate;
             if (options.certify) {
@@ -547,8 +546,8 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                         options.progress(report);
                     };
                 }
-                const BasisCheck check = certify_groebner_basis(
-                    candidate, inputs, options.deadline, std::max(1, options.threads), certifying);
+                const BasisCheck check = certify_groebner_basis(candidate, inputs, options.deadline,
+                                                                threads, certifying);
                 s.certify_seconds += seconds_since(certify_start);
                 s.certification += check.work;
                 if (!check.ok) {
@@ -578,9 +577,8 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             result.stats.zero_reductions = s.f4.zero_rows;
             return result;
         }
-        add_to_group(*group, basis, p, layout, std::max(1, options.threads));
-        group->candidate =
-            reconstruct(*group, ring, std::max(1, options.threads), options.deadline);
+        add_to_group(*group, basis, p, layout, threads);
+        group->candidate = reconstruct(*group, ring, threads, options.deadline);
         if (options.progress) {
             GroebnerProgress progress;
             progress.stage = GroebnerProgress::Stage::primes;

@@ -488,8 +488,8 @@ TEST(Modular, TwoThreadsGiveTheSameF4StepsAsOne) {
         const MonomialLayout& layout = generators.front().ring()->layout();
         for (const std::uint32_t p : {65521u, 2147483647u}) {
             modular::F4Options one, two;
-            one.threads = [] { return 1; };
-            two.threads = [] { return 2; };
+            one.threads = 1;
+            two.threads = 2;
             modular::F4Stats stats_one, stats_two;
             modular::F4Trace trace_one, trace_two;
             const auto alone =
@@ -531,7 +531,7 @@ TEST(Modular, F4OnTwoThreadsStopsAtItsDeadline) {
         parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic7.ideal"));
     const MonomialLayout& layout = ideal.ring->layout();
     modular::F4Options options;
-    options.threads = [] { return 2; };
+    options.threads = 2;
     options.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(30);
     EXPECT_THROW(modular::f4(modulo(ideal.generators, 65521u), layout, {65521u}, options), Timeout);
 }
