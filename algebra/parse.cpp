@@ -76,6 +76,23 @@ class Lexer {
             while (pos_ < text_.size() && (is_digit(text_[pos_]) || text_[pos_] == '.')) {
                 advance();
             }
+            // A decimal exponent, as numerical tools print numbers: 1.5e-3. Only when digits
+            // follow (after a sign): "2e" stays the number 2 and the name e, an error as before.
+            if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
+                std::size_t digits_at = pos_ + 1;
+                if (digits_at < text_.size() &&
+                    (text_[digits_at] == '+' || text_[digits_at] == '-')) {
+                    ++digits_at;
+                }
+                if (digits_at < text_.size() && is_digit(text_[digits_at])) {
+                    while (pos_ < digits_at) {
+                        advance();
+                    }
+                    while (pos_ < text_.size() && is_digit(text_[pos_])) {
+                        advance();
+                    }
+                }
+            }
         } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
             t.kind = TokenKind::identifier;
             while (pos_ < text_.size() &&
@@ -324,7 +341,8 @@ class InfixParser {
         const Token op = token_;
         token_ = lexer_.next();
         const std::string expected = "a non-negative integer exponent";
-        if (token_.kind != TokenKind::number || token_.text.find('.') != std::string::npos) {
+        if (token_.kind != TokenKind::number ||
+            token_.text.find_first_of(".eE") != std::string::npos) {
             fail(expected);
         }
         const std::string digits = token_.text;
@@ -359,7 +377,8 @@ class InfixParser {
         if (token_.kind == TokenKind::number) {
             Rational value;
             if (!Rational::from_literal(token_.text, value)) {
-                fail("a number such as 12, 3.5 or 0.125");
+                fail("a number such as 12, 3.5, 0.125 or 1.5e-3 (decimal exponents of at most " +
+                     std::to_string(Rational::kMaxDecimalExponent) + ")");
             }
             token_ = lexer_.next();
             return Value::constant(ring_, std::move(value));
@@ -465,7 +484,7 @@ class InfixParser {
 
     // An integer literal of at most 1000 (the multiple of an angle).
     long small_integer(const std::string& expected) {
-        if (token_.text.find('.') != std::string::npos || token_.text.size() > 4 ||
+        if (token_.text.find_first_of(".eE") != std::string::npos || token_.text.size() > 4 ||
             std::stol(token_.text) > 1000) {
             fail(expected + ", with multiples of at most 1000");
         }

@@ -52,6 +52,33 @@ bool Rational::from_literal(std::string_view text, Rational& out) {
         return true;
     };
     const auto slash = text.find('/');
+    // A decimal exponent: the mantissa (an integer or a decimal, not a fraction) times 10^e.
+    const auto e = text.find_first_of("eE");
+    if (e != std::string_view::npos && slash == std::string_view::npos) {
+        std::string_view exponent = text.substr(e + 1);
+        const bool negative = !exponent.empty() && exponent.front() == '-';
+        if (!exponent.empty() && (exponent.front() == '-' || exponent.front() == '+')) {
+            exponent.remove_prefix(1);
+        }
+        // Leading zeros do not make an exponent large.
+        while (exponent.size() > 1 && exponent.front() == '0') {
+            exponent.remove_prefix(1);
+        }
+        Rational mantissa;
+        if (!all_digits(exponent) || exponent.size() > 3 ||
+            !from_literal(text.substr(0, e), mantissa)) {
+            return false;
+        }
+        const int power = std::stoi(std::string(exponent));
+        if (power > kMaxDecimalExponent) {
+            return false;
+        }
+        Integer scale;
+        fmpz_set_ui(scale.get(), 10);
+        fmpz_pow_ui(scale.get(), scale.get(), static_cast<ulong>(power));
+        out = negative ? mantissa / Rational(scale) : mantissa * Rational(scale);
+        return true;
+    }
     const auto dot = text.find('.');
     Integer num, den(1);
     if (slash != std::string_view::npos) {

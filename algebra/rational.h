@@ -100,9 +100,12 @@ class Rational {
     int sign() const { return fmpq_sgn(v_); }
     // "a" or "a/b" in lowest terms.
     std::string to_string() const;
-    // Exact value of a decimal or fraction literal such as "12", "3/4" or "0.125"; returns
-    // false when `text` is not of that form.
+    // Exact value of a decimal or fraction literal such as "12", "3/4", "0.125" or "1.5e-3"
+    // (a decimal with an exponent: 3/2000); returns false when `text` is not of that form or
+    // its exponent exceeds kMaxDecimalExponent in size (1e999999999 would be a number of three
+    // billion digits).
     static bool from_literal(std::string_view text, Rational& out);
+    static constexpr int kMaxDecimalExponent = 999;
 
     Rational& operator+=(const Rational& o) {
         fmpq_add(v_, v_, o.v_);

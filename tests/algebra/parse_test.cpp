@@ -27,6 +27,32 @@ TEST(Parse, ExactNumbersAndPrecedence) {
     EXPECT_EQ(to_string(parse_polynomial("1.25 + .5", r)), "7/4");
 }
 
+// Numbers as numerical tools print them, read exactly: 1.5e-3 is 3/2000, not the double
+// nearest it. The exponent's size is bounded (1e999999999 would have a billion digits), and an
+// 'e' not followed by digits is a name, an error after a number as before.
+TEST(Parse, DecimalExponentsAreExact) {
+    const RingPtr r = xyz();
+    EXPECT_EQ(to_string(parse_polynomial("1.5e-3*x", r)), "3/2000*x");
+    EXPECT_EQ(to_string(parse_polynomial("2E3 + 2e+3 + .5e1", r)), "4005");
+    EXPECT_EQ(to_string(parse_polynomial("1e-0 - 10e-1", r)), "0");
+    EXPECT_EQ(parse_polynomial("1e-999*x", r),
+              parse_polynomial("1/1" + std::string(999, '0') + "*x", r));
+    EXPECT_EQ(parse_polynomial("7e0007", r), parse_polynomial("70000000", r));
+    const RingPtr with_e = PolyRing::make({"e", "x"}, MonomialOrder::grevlex(2));
+    EXPECT_EQ(to_string(parse_polynomial("2*e + 2e1*x", with_e)), "2*e+20*x");
+    EXPECT_EQ(to_string(parse_polynomial("3/4e2", r)), "3/400");
+    const test::BadInput cases[] = {
+        {"1e1000*x", 1, 1, "decimal exponents of at most 999"},
+        {"1.5e-3.2", 1, 7, "an operator"},
+        {"2e", 1, 2, "an operator"},
+        {"2e-", 1, 2, "an operator"},
+        {"x^2e1", 1, 3, "non-negative integer exponent"},
+    };
+    for (const auto& c : cases) {
+        test::expect_parse_error(c, [&] { parse_polynomial(c.text, r); });
+    }
+}
+
 // Python's and SymPy's `**` is the power operator too (pasted from str() of a SymPy expression).
 TEST(Parse, DoubleStarIsAPower) {
     const RingPtr r = xyz();
