@@ -1,16 +1,32 @@
 #include "render/camera.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "algebra/error.h"
 
 namespace locus::render {
 
 namespace {
+// %g, not std::to_string's %f: an eye at 1e-300 printed as (0.000000, …).
 std::string format_vec(const Vec3& v) {
-    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) +
-           ")";
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
+    return text;
+}
+
+// v / |v|, computed on v scaled by its largest component: glm::normalize squares the
+// components, which overflows past 1e154 and underflows to 0 below 1e-154. Zero for a zero or
+// non-finite v.
+Vec3 direction_of(const Vec3& v) {
+    const double largest = largest_component(v);
+    if (!(largest > 0.0) || !std::isfinite(largest)) {
+        return Vec3(0.0);
+    }
+    return glm::normalize(v / largest);
 }
 }  // namespace
 
@@ -21,13 +37,15 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
                          "degrees");
     }
     const Vec3 view = spec.target - spec.eye;
-    if (!(glm::length(view) > 0.0) || !std::isfinite(glm::length(view))) {
-        throw InputError("camera.eye " + format_vec(spec.eye),
-                         "the eye must differ from the target " + format_vec(spec.target));
+    forward_ = direction_of(view);
+    if (forward_ == Vec3(0.0)) {
+        throw InputError(
+            "camera.eye " + format_vec(spec.eye),
+            "the eye must differ from the target " + format_vec(spec.target) + ", both finite");
     }
-    forward_ = glm::normalize(view);
-    const Vec3 side = glm::cross(forward_, spec.up);
-    if (!(glm::length(side) > 1e-9 * glm::length(spec.up)) || !(glm::length(spec.up) > 0.0)) {
+    const Vec3 up = direction_of(spec.up);
+    const Vec3 side = glm::cross(forward_, up);
+    if (!(glm::length(side) > 1e-9) || up == Vec3(0.0)) {
         throw InputError("camera.up " + format_vec(spec.up),
                          "the up vector must be non-zero and not parallel to the viewing "
                          "direction");

@@ -15,6 +15,23 @@ std::string format_point(const Vec3& p) {
     return text;
 }
 
+// Whether the box [low, high] lies inside the region (for a sphere: all eight corners do).
+bool contains(const ClipRegion& region, const Vec3& low, const Vec3& high) {
+    if (const auto* box = std::get_if<ClipBox>(&region)) {
+        return glm::all(glm::greaterThanEqual(low, box->min)) &&
+               glm::all(glm::lessThanEqual(high, box->max));
+    }
+    const auto& sphere = std::get<ClipSphere>(region);
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p{(corner & 1) != 0 ? high.x : low.x, (corner & 2) != 0 ? high.y : low.y,
+                     (corner & 4) != 0 ? high.z : low.z};
+        if (!(scaled_length(p - sphere.center) <= sphere.radius)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 std::string describe(const ClipRegion& region) {
     if (const auto* sphere = std::get_if<ClipSphere>(&region)) {
         char text[48];
@@ -77,6 +94,16 @@ EmptyPictureReason why_not_hit(const Surface& surface, const algebra::CompiledPo
         *inside = {surface.frame.to_world(inside->min), surface.frame.to_world(inside->max)};
     }
     if (!inside) {
+        // Points were found, all of them inside the clip region, yet none by the region's own
+        // sampling: the surface is a speck of a region far larger than it (a unit sphere in a
+        // clip sphere of radius 1e150), not outside it.
+        if (extent->kind == SurfaceExtent::Kind::bounded &&
+            contains(surface.clip, extent->low, extent->high)) {
+            return {"it lies inside its clip region, " + describe(surface.clip) +
+                        ", but spans only " + format_point(extent->low) + " to " +
+                        format_point(extent->high) + ", too small a part of it for a pixel",
+                    Remedy::fit};
+        }
         std::string where;
         if (extent->kind == SurfaceExtent::Kind::bounded) {
             where = "; the points found elsewhere span " + format_point(extent->low) + " to " +
@@ -87,9 +114,10 @@ EmptyPictureReason why_not_hit(const Surface& surface, const algebra::CompiledPo
             extent->kind == SurfaceExtent::Kind::bounded ? Remedy::fit : Remedy::none};
     }
     const ClipSphere visible = bounding_sphere(ClipRegion(*inside));
-    const Vec3 forward = glm::normalize(camera.target - camera.eye);
+    const Vec3 view = camera.target - camera.eye;
+    const Vec3 forward = glm::normalize(view / largest_component(view));
     const Vec3 to_centre = visible.center - camera.eye;
-    const double distance = glm::length(to_centre);
+    const double distance = scaled_length(to_centre);
     const double along = glm::dot(to_centre, forward);
     if (along < -visible.radius) {
         return {"what can be seen of it, about " + format_point(visible.center) +

@@ -1,7 +1,12 @@
 #include "render/scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
+
+#include "algebra/error.h"
 
 namespace locus::render {
 
@@ -35,12 +40,25 @@ CameraSpec default_camera(const Scene& scene) {
         high = Vec3(2.0);
     }
     const Vec3 center = (low + high) * 0.5;
-    const double radius = glm::length(high - low) * 0.5 / std::sqrt(3.0);
+    const double radius = scaled_length(high - low) * 0.5 / std::sqrt(3.0);
     CameraSpec camera;
     camera.target = center;
     const double half_fov = camera.fov_degrees * std::numbers::pi / 360.0;
     const double distance = 1.08 * radius / std::sin(half_fov);
     camera.eye = center + distance * glm::normalize(Vec3{0.55, 0.45, 1.0});
+    const bool eye_finite =
+        std::isfinite(camera.eye.x) && std::isfinite(camera.eye.y) && std::isfinite(camera.eye.z);
+    if (!std::isfinite(distance) || !eye_finite || camera.eye == camera.target) {
+        char extent[160];
+        std::snprintf(extent, sizeof extent, "(%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)", low.x,
+                      low.y, low.z, high.x, high.y, high.z);
+        const bool large = !(radius < 1.0);  // NaN: an extent that overflowed
+        throw InputError("the scene's extent " + std::string(extent),
+                         std::string("too ") + (large ? "large" : "small") +
+                             " to place the default camera in double precision (give a camera, "
+                             "or " +
+                             (large ? "smaller" : "larger") + " clip regions)");
+    }
     return camera;
 }
 

@@ -2,7 +2,9 @@
 // glm::dvec3 (double, since the root finders and the exact reference work in double).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -17,6 +19,18 @@ inline std::array<double, 3> to_point(const Vec3& v) {
 }
 inline Vec3 to_vec(const std::array<double, 3>& p) {
     return {p[0], p[1], p[2]};
+}
+
+// The largest |component|, and the length computed on v scaled by it: glm::length squares the
+// components, which overflows past 1e154 and underflows to 0 below 1e-154 where the length
+// itself is an ordinary double (a clip sphere of radius 1e200 had NaN ends, a camera 1e-300
+// from its target was "at" it).
+inline double largest_component(const Vec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+inline double scaled_length(const Vec3& v) {
+    const double largest = largest_component(v);
+    return largest > 0.0 && std::isfinite(largest) ? largest * glm::length(v / largest) : largest;
 }
 
 struct Ray {

@@ -180,6 +180,35 @@ TEST(Framing, AGivenClipRegionIsKeptUnlessForced) {
     EXPECT_NEAR(std::get<ClipSphere>(scene.surfaces[0].clip).radius, 1.05 * std::sqrt(3.0), 0.03);
 }
 
+// The default camera at the far ends of the doubles: a clip radius whose square overflows
+// (1e200) still places it, one whose extent overflows (1e308) is an input error that says so
+// (it was "camera.eye (inf, inf, inf): the eye must differ from the target"), and a tiny one
+// (1e-300, whose square underflows) places it too instead of at the target.
+TEST(Framing, TheDefaultCameraAtTheEndsOfTheDoubles) {
+    const auto camera_for = [](double radius) {
+        Scene scene;
+        Surface surface;
+        surface.equation = "x^2+y^2+z^2-1";
+        surface.clip = ClipSphere{{0.0, 0.0, 0.0}, radius};
+        scene.surfaces.push_back(surface);
+        return default_camera(scene);
+    };
+    for (const double radius : {1e-300, 1e-160, 1.0, 1e160, 1e200}) {
+        const CameraSpec camera = camera_for(radius);
+        const double distance = glm::length((camera.eye - camera.target) / radius);
+        EXPECT_GT(distance, 1.0) << radius;
+        EXPECT_LT(distance, 10.0) << radius;
+    }
+    try {
+        camera_for(1e308);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("too large to place the default camera"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(Framing, AnEmptyPictureIsExplained) {
     // Each reason in words, with the kind of remedy the front end names its way (the library's
     // text names no command-line flag).
@@ -195,6 +224,13 @@ TEST(Framing, AnEmptyPictureIsExplained) {
     CameraSpec camera;  // eye (0, 0, 5) looking at the origin
     sphere.clip = ClipSphere{{0.0, 0.0, 0.0}, 0.5};
     expect(why_not_hit(sphere, unit, camera, 32, 32), "no point of it was found inside",
+           Remedy::fit);
+    // Inside its clip region, but a speck of it: the region is not what hides it (a message
+    // that said "no point inside" here listed points inside).
+    sphere.clip = ClipSphere{{0.0, 0.0, 0.0}, 1e150};
+    expect(why_not_hit(sphere, unit, camera, 32, 32),
+           "lies inside its clip region, the sphere of radius 1e+150 about (0, 0, 0), but spans "
+           "only",
            Remedy::fit);
     sphere.clip = ClipSphere{};
     CameraSpec away = camera;

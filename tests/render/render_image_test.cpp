@@ -88,6 +88,49 @@ TEST(Render, NoPixelIsNanAtSingularPoints) {
     }
 }
 
+// A sphere of radius R seen from 5R with a clip sphere of 2R is the same picture at every scale
+// the doubles hold: its silhouette covers the same pixels, and the depth scales with R. At
+// R = 1e200 the clip sphere's squares overflowed (NaN ends) and every ray was decided a miss, an
+// empty picture with no undecided ray; at 1e-200 they underflowed. The equation's constant
+// (1e400, 1e-400) is beyond the doubles itself: the exact arithmetic decides there.
+TEST(Render, ASphereIsTheSamePictureAtEveryScale) {
+    const auto hits_at = [](const char* r, const char* r_squared, double scale,
+                            TraceMethod method) {
+        Scene scene;
+        scene.width = scene.height = 24;
+        scene.camera = CameraSpec{{0, 0, 5 * scale}, {0, 0, 0}, {0, 1, 0}, 30.0};
+        const std::string equation = std::string("x^2+y^2+z^2-") + r_squared;
+        scene.surfaces.push_back({equation, "", ClipSphere{{0, 0, 0}, 2 * scale}, Material{}, ""});
+        scene.options.method = method;
+        scene.options.shadows = false;
+        scene.options.threads = 2;
+        const std::vector<algebra::CompiledPolynomial> surfaces = {
+            algebra::compile_surface(equation)};
+        RenderStats stats;
+        const RenderedImage image = render(scene, surfaces, {}, &stats);
+        EXPECT_EQ(stats.unknown, 0) << r;
+        // A hit has a unit normal, a miss a zero one (the depth AOV is a float: 4e200 is
+        // infinite there).
+        std::vector<bool> hit;
+        for (std::size_t p = 0; p < image.normal.size(); p += 3) {
+            const double z = image.normal[p + 2];
+            hit.push_back(z != 0.0);
+            if (hit.back()) {
+                EXPECT_GT(z, 0.0) << r;  // the near side faces the eye
+            }
+        }
+        return hit;
+    };
+    for (const TraceMethod method : {TraceMethod::certified, TraceMethod::exact}) {
+        const std::vector<bool> unit = hits_at("1", "1", 1.0, method);
+        EXPECT_GT(std::count(unit.begin(), unit.end(), true), 24 * 24 / 20);
+        EXPECT_EQ(hits_at("1e200", "1e400", 1e200, method), unit);
+        EXPECT_EQ(hits_at("1e100", "1e200", 1e100, method), unit);
+        EXPECT_EQ(hits_at("1e-100", "1e-200", 1e-100, method), unit);
+        EXPECT_EQ(hits_at("1e-200", "1e-400", 1e-200, method), unit);
+    }
+}
+
 TEST(Render, WithoutAovsTheColourIsTheSameAndTheAovsStayEmpty) {
     const Scene scene = sphere_scene(TraceMethod::sturm);
     const std::vector<algebra::CompiledPolynomial> surfaces = {

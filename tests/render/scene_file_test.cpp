@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "algebra/error.h"
 #include "render/camera.h"
 #include "render/material.h"
@@ -228,8 +231,26 @@ TEST(Camera, DegenerateCamerasAreRejected) {
         Camera({{1, 2, 3}, {1, 2, 3}, {0, 1, 0}, 35}, 10, 10);
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "camera.eye (1.000000, 2.000000, 3.000000): the eye must differ from the "
-                  "target (1.000000, 2.000000, 3.000000)");
+                  "camera.eye (1, 2, 3): the eye must differ from the target (1, 2, 3), both "
+                  "finite");
+    }
+    EXPECT_THROW(Camera({{INFINITY, 0, 5}, {0, 0, 0}, {0, 1, 0}, 35}, 10, 10), InputError);
+    EXPECT_THROW(Camera({{0, 0, 5}, {0, 0, 0}, {0, NAN, 0}, 35}, 10, 10), InputError);
+}
+
+// Far from the unit scale a camera is still a camera: squaring the view (as glm::length does)
+// overflowed past 1e154 and underflowed below 1e-154, and an eye at 1e-300 from its target was
+// refused as "the eye must differ from the target (0.000000, …)".
+TEST(Camera, FarScalesKeepTheirDirections) {
+    for (const double scale : {1e-300, 1e-200, 1.0, 1e200, 1e300}) {
+        const Camera camera({{0, 0, 5 * scale}, {0, 0, 0}, {0, scale, 0}, 35}, 11, 11);
+        const Ray centre = camera.ray(5.5, 5.5);  // the middle of the middle pixel
+        const Vec3 d =
+            centre.direction / std::max({std::abs(centre.direction.x), std::abs(centre.direction.y),
+                                         std::abs(centre.direction.z)});
+        EXPECT_NEAR(d.z, -1.0, 1e-12) << scale;
+        EXPECT_NEAR(d.x, 0.0, 1e-12) << scale;
+        EXPECT_NEAR(d.y, 0.0, 1e-12) << scale;
     }
 }
 
