@@ -99,6 +99,16 @@ void require_rationals(const algebra::IdealFile& ideal, const std::string& path)
 }
 
 // The generators of `path`, moved into `ring` (same variable names, any declared order).
+// The zero ideal (a file of no non-zero generator) as the one generator 0: the library then
+// knows its ring, and every operation has its answer (I : 0 = ⟨1⟩, I ∩ 0 = 0, f ∈ 0 iff f = 0).
+std::vector<algebra::Polynomial> with_zero_generator(std::vector<algebra::Polynomial> generators,
+                                                     const algebra::RingPtr& ring) {
+    if (generators.empty()) {
+        generators.emplace_back(ring);
+    }
+    return generators;
+}
+
 std::vector<algebra::Polynomial> generators_in(const std::string& path,
                                                const algebra::RingPtr& ring) {
     const algebra::IdealFile other = read_ideal(path);
@@ -116,7 +126,7 @@ std::vector<algebra::Polynomial> generators_in(const std::string& path,
     for (const auto& g : other.generators) {
         out.push_back(g.in_ring(ring, map));
     }
-    return out;
+    return with_zero_generator(std::move(out), ring);
 }
 
 algebra::Polynomial polynomial_argument(const std::string& text, const algebra::RingPtr& ring) {
@@ -146,12 +156,9 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     const algebra::IdealFile ideal = read_ideal(args.first, args.order);
     require_rationals(ideal, args.first);
     const algebra::RingPtr& ring = ideal.ring;
-    const auto& gens = ideal.generators;
-    // The zero ideal is an answer only for dimension (Q[x] itself); the other operations
-    // refuse it rather than guess what was meant.
-    if (gens.empty() && args.operation != "dimension") {
-        throw CommandFailure(exit_input, args.first + ": the ideal has no generators");
-    }
+    const std::vector<algebra::Polynomial> gens =
+        args.operation == "dimension" ? ideal.generators
+                                      : with_zero_generator(ideal.generators, ring);
     auto print_basis = [&](const std::vector<algebra::Polynomial>& basis) {
         progress.clear();
         std::cout << algebra::format_polynomials(basis, *ring, format);

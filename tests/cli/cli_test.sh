@@ -118,6 +118,24 @@ expect "dimension" 0 "positive-dimensional" -- "$locus" ideal dimension "$tmp/tw
 printf 'vars: x,y,z\nx\n' > "$tmp/x.ideal"
 expect "contains: no" 1 "no" -- "$locus" ideal contains "$tmp/twisted.ideal" "$tmp/x.ideal"
 expect "radical membership" 0 "yes" -- "$locus" ideal radical-member "$tmp/twisted.ideal" "y^3-z^2"
+# The zero ideal (a file whose only generator is 0) is an argument like any other: I : 0 = <1>,
+# 0 : I = 0, I ∩ 0 = 0, 0 ⊆ I, f ∈ 0 only for f = 0 (these were "the ideal has no generators").
+printf 'vars: x,y,z
+0
+' > "$tmp/zero.ideal"
+expect "quotient by the zero ideal is the unit ideal" 0 "  1;" -- \
+    "$locus" ideal quotient "$tmp/twisted.ideal" "$tmp/zero.ideal" --format singular
+expect "saturation of the zero ideal is zero" 0 "ideal G = 0;" -- \
+    "$locus" ideal saturate "$tmp/zero.ideal" "$tmp/twisted.ideal" --format singular
+expect "intersection with the zero ideal is zero" 0 "ideal(0_R)" -- \
+    "$locus" ideal intersect "$tmp/twisted.ideal" "$tmp/zero.ideal" --format macaulay2
+expect "sum with the zero ideal" 0 "" -- \
+    bash -c "diff <(\"$locus\" ideal sum \"$tmp/zero.ideal\" \"$tmp/twisted.ideal\") <(\"$locus\" groebner \"$tmp/twisted.ideal\")"
+expect "the zero ideal contains no x" 1 "no" -- "$locus" ideal contains "$tmp/zero.ideal" "$tmp/x.ideal"
+expect "every ideal contains the zero ideal" 0 "yes" -- \
+    "$locus" ideal contains "$tmp/twisted.ideal" "$tmp/zero.ideal"
+expect "x is not in the zero ideal" 1 "remainder: x" -- "$locus" ideal member "$tmp/zero.ideal" "x"
+expect "nor in its radical" 1 "no" -- "$locus" ideal radical-member "$tmp/zero.ideal" "x"
 expect "demo implicitizes and renders" 0 "verified: vanishes identically" -- "$locus" demo -o "$tmp/demo.png"
 expect "demo wrote its PNG" 0 "" -- test -s "$tmp/demo.png"
 
