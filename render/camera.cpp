@@ -18,16 +18,6 @@ std::string format_vec(const Vec3& v) {
     return text;
 }
 
-// v / |v|, computed on v scaled by its largest component: glm::normalize squares the
-// components, which overflows past 1e154 and underflows to 0 below 1e-154. Zero for a zero or
-// non-finite v.
-Vec3 direction_of(const Vec3& v) {
-    const double largest = largest_component(v);
-    if (!(largest > 0.0) || !std::isfinite(largest)) {
-        return Vec3(0.0);
-    }
-    return glm::normalize(v / largest);
-}
 }  // namespace
 
 Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
@@ -37,13 +27,13 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
                          "degrees");
     }
     const Vec3 view = spec.target - spec.eye;
-    forward_ = direction_of(view);
+    forward_ = scaled_normalize(view);
     if (forward_ == Vec3(0.0)) {
         throw InputError(
             "camera.eye " + format_vec(spec.eye),
             "the eye must differ from the target " + format_vec(spec.target) + ", both finite");
     }
-    const Vec3 up = direction_of(spec.up);
+    const Vec3 up = scaled_normalize(spec.up);
     const Vec3 side = glm::cross(forward_, up);
     if (!(glm::length(side) > 1e-9) || up == Vec3(0.0)) {
         throw InputError("camera.up " + format_vec(spec.up),

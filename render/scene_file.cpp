@@ -56,10 +56,13 @@ Light read_light(const toml::table& table, const std::string& path) {
     const std::string type = r.text("type").value_or("directional");
     if (type == "directional") {
         light.direction = r.vector("direction", light.direction);
-        if (!(glm::length(light.direction) > 0.0)) {
-            throw InputError(position(table) + ": " + path + "direction", "must be non-zero");
+        // Normalized at any scale: [1e300, 1e300, 0] has an infinite glm::length, and
+        // glm::normalize made it the zero vector (a picture without its key light).
+        light.direction = scaled_normalize(light.direction);
+        if (light.direction == Vec3(0.0)) {
+            throw InputError(position(table) + ": " + path + "direction",
+                             "must be non-zero and finite");
         }
-        light.direction = glm::normalize(light.direction);
     } else if (type == "point") {
         light.kind = Light::Kind::point;
         if (table.get("position") == nullptr) {

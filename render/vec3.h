@@ -32,6 +32,14 @@ inline double scaled_length(const Vec3& v) {
     const double largest = largest_component(v);
     return largest > 0.0 && std::isfinite(largest) ? largest * glm::length(v / largest) : largest;
 }
+// v / |v| the same way; the zero vector for a zero or non-finite v.
+inline Vec3 scaled_normalize(const Vec3& v) {
+    const double largest = largest_component(v);
+    if (!(largest > 0.0) || !std::isfinite(largest)) {
+        return Vec3(0.0);
+    }
+    return glm::normalize(v / largest);
+}
 
 struct Ray {
     Vec3 origin;

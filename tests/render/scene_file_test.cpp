@@ -221,6 +221,25 @@ TEST(SceneFile, BadScenesNameTheKeyAndThePosition) {
               "expected ']', saw '\\n'");
 }
 
+// A light's direction is normalized at any scale: [1e300, 1e300, 0] was normalized to the zero
+// vector (its length overflowed), a picture without its key light.
+TEST(SceneFile, LightDirectionsAreNormalizedAtAnyScale) {
+    const auto direction_of = [](const std::string& direction) {
+        const Scene scene = parse_scene(
+            "[[surface]]\nequation = \"x^2+y^2+z^2-1\"\n[[light]]\ndirection = " + direction +
+            "\n");
+        return scene.lights.at(0).direction;
+    };
+    const Vec3 diagonal = direction_of("[1e300, 1e300, 0]");
+    EXPECT_NEAR(diagonal.x, std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(diagonal.y, std::sqrt(0.5), 1e-15);
+    EXPECT_EQ(diagonal.z, 0.0);
+    EXPECT_EQ(direction_of("[1e-320, 0, 0]"), Vec3(1.0, 0.0, 0.0));
+    EXPECT_EQ(direction_of("[0, -3, 0]"), Vec3(0.0, -1.0, 0.0));
+    EXPECT_THROW(direction_of("[0, 0, 0]"), InputError);
+    EXPECT_THROW(direction_of("[inf, 0, 0]"), InputError);
+}
+
 TEST(Camera, DegenerateCamerasAreRejected) {
     EXPECT_THROW(Camera({{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, 35}, 10, 10), InputError);
     EXPECT_THROW(Camera({{0, 5, 0}, {0, 0, 0}, {0, 1, 0}, 35}, 10, 10), InputError);
