@@ -90,7 +90,7 @@ ClipSphere bounding_sphere(const ClipRegion& region) {
         return *sphere;
     }
     const auto& box = std::get<ClipBox>(region);
-    return {(box.min + box.max) * 0.5, glm::length(box.max - box.min) * 0.5};
+    return {(box.min + box.max) * 0.5, scaled_length(box.max - box.min) * 0.5};
 }
 
 }  // namespace locus::render

@@ -70,7 +70,7 @@ double Shader::visibility(const Vec3& point, const Vec3& normal, const Light& li
     // samples of this point.
     Vec3 a, b;
     frame_around(light.kind == Light::Kind::directional ? light.direction
-                                                        : glm::normalize(light.position - point),
+                                                        : scaled_normalize(light.position - point),
                  a, b);
     int visible = 0;
     for (int s = 0; s < samples; ++s) {
