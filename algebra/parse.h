@@ -1,9 +1,10 @@
 // Reading polynomials and ideal files (formats in DESIGN.md, "Polynomials" and "Ideal files").
 //
 // Polynomials are infix text over the ring's variables: integers, rationals `3/4`, decimals
-// read exactly (`0.1` = 1/10, `1.5e-3` = 3/2000), `+ - * / ^`, parentheses, free whitespace. `^` takes a
-// non-negative integer literal; `/` only a constant divisor. Every error is a ParseError whose
-// line and column (1-based) point at the offending character and which says what was expected.
+// read exactly (`0.1` = 1/10, `1.5e-3` = 3/2000), `+ - * / ^`, parentheses, free whitespace. `^`
+// takes a non-negative integer literal; `/` only a constant divisor. Every error is a ParseError
+// whose line and column (1-based) point at the offending character and which says what was
+// expected.
 #pragma once
 
 #include <cstdint>

@@ -156,9 +156,9 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
     const algebra::IdealFile ideal = read_ideal(args.first, args.order);
     require_rationals(ideal, args.first);
     const algebra::RingPtr& ring = ideal.ring;
-    const std::vector<algebra::Polynomial> gens =
-        args.operation == "dimension" ? ideal.generators
-                                      : with_zero_generator(ideal.generators, ring);
+    const std::vector<algebra::Polynomial> gens = args.operation == "dimension"
+                                                      ? ideal.generators
+                                                      : with_zero_generator(ideal.generators, ring);
     auto print_basis = [&](const std::vector<algebra::Polynomial>& basis) {
         progress.clear();
         std::cout << algebra::format_polynomials(basis, *ring, format);
