@@ -52,7 +52,25 @@ std::shared_ptr<const render::PatchTrim> trim_of(const implicit::BezierPatch& pa
                               : render::PatchTrim::Domain::box);
 }
 
-// A frame centred on the patch's box and scaled to it, and the patch's equation f written in it:
+// The box of the control points, widened by a millionth of its size (rounding of the decimals).
+render::ClipBox box_of(const implicit::BezierPatch& patch) {
+    render::ClipBox box{render::Vec3(INFINITY), render::Vec3(-INFINITY)};
+    for (const auto& point : patch.points) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = fmpq_get_d(point[static_cast<std::size_t>(c)].get());
+            box.min[c] = std::min(box.min[c], v);
+            box.max[c] = std::max(box.max[c], v);
+        }
+    }
+    const double margin = 1e-6 * std::max(1.0, glm::length(box.max - box.min));
+    box.min -= render::Vec3(margin);
+    box.max += render::Vec3(margin);
+    return box;
+}
+
+}  // namespace
+
+// A frame centred on the box and scaled to it, and the equation f written in it:
 // g(x') = f(origin + scale·x'), exactly (render/surface_frame.h says why). The origin is the
 // box's centre rounded to a multiple of scale/1024, a dyadic number, so the double the renderer
 // subtracts and the rational substituted here are the same number.
@@ -81,24 +99,6 @@ std::pair<render::SurfaceFrame, algebra::Polynomial> framed(const algebra::Polyn
     }
     return {frame, f.substitute(values).primitive_part()};
 }
-
-// The box of the control points, widened by a millionth of its size (rounding of the decimals).
-render::ClipBox box_of(const implicit::BezierPatch& patch) {
-    render::ClipBox box{render::Vec3(INFINITY), render::Vec3(-INFINITY)};
-    for (const auto& point : patch.points) {
-        for (int c = 0; c < 3; ++c) {
-            const double v = fmpq_get_d(point[static_cast<std::size_t>(c)].get());
-            box.min[c] = std::min(box.min[c], v);
-            box.max[c] = std::max(box.max[c], v);
-        }
-    }
-    const double margin = 1e-6 * std::max(1.0, glm::length(box.max - box.min));
-    box.min -= render::Vec3(margin);
-    box.max += render::Vec3(margin);
-    return box;
-}
-
-}  // namespace
 
 void trim_to_domain(const std::string& path, const std::string& text, render::Surface& surface) {
     implicit::Parametrization map;

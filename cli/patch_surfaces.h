@@ -7,12 +7,21 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "algebra/polynomial.h"
 
 #include "cli/process_limits.h"
 #include "render/scene.h"
 
 namespace locus::cli {
+
+// A frame centred on `box` and scaled to it (a power of two), and f written in it: g(x') =
+// f(origin + scale·x') exactly (render/surface_frame.h says why). Patches are rendered in their
+// own frame, and so are equations whose clip region lies far from the origin.
+std::pair<render::SurfaceFrame, algebra::Polynomial> framed(const algebra::Polynomial& f,
+                                                            const render::ClipBox& box);
 
 // Does the file hold patches (a .bpt file, or a .param file with a `bezier:` line)?
 bool holds_patches(const std::string& path, const std::string& text);

@@ -335,6 +335,7 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
             }
             throw;
         }
+        frame_far_equations(scene, compiled);
         extents = fit_scene(args, scene, compiled, deadline);
         apply_camera_flags(args, scene);
         if (scene.camera_path) {

@@ -1,8 +1,10 @@
 #include "cli/surface_input.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "algebra/error.h"
+#include "algebra/parse.h"
 #include "algebra/print.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
@@ -77,6 +79,29 @@ std::vector<algebra::CompiledPolynomial> compile_surfaces(render::Scene& scene, 
         compiled.push_back(compile_equation(name, surface.equation, "rendering"));
     }
     return compiled;
+}
+
+void frame_far_equations(render::Scene& scene, std::vector<algebra::CompiledPolynomial>& compiled) {
+    const algebra::RingPtr xyz =
+        algebra::PolyRing::make({"x", "y", "z"}, algebra::MonomialOrder::grevlex(3));
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        render::Surface& surface = scene.surfaces[i];
+        if (surface.fit_clip || !surface.frame.is_identity()) {
+            continue;
+        }
+        const render::ClipSphere bound = render::bounding_sphere(surface.clip);
+        if (!(render::largest_component(bound.center) > 4.0 * bound.radius) ||
+            !std::isfinite(bound.radius)) {
+            continue;
+        }
+        const render::ClipBox box{bound.center - render::Vec3(bound.radius),
+                                  bound.center + render::Vec3(bound.radius)};
+        // The compiled (square-free) equation, exactly, written in the frame.
+        auto [frame, local] = framed(algebra::parse_polynomial(compiled[i].equation(), xyz), box);
+        surface.equation = algebra::to_string(local);
+        surface.frame = frame;
+        compiled[i] = algebra::compile_surface(local);
+    }
 }
 
 render::SurfaceCompiler scene_surface_compiler(Deadline deadline) {

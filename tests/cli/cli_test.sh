@@ -242,6 +242,11 @@ expect "render: unknown scene key" 2 "bad.toml: line 3, column 1: surface[1].rad
 printf '[image]\nwidth = 24\nheight = 16\n[[surface]]\nequation = "x^2+y^2+z^2-1"\n[render]\nmethod = "bernstein"\n' > "$tmp/good.toml"
 expect "render a scene file" 0 "rendered 24x16, 1×1 samples, method bernstein" -- \
     "$locus" render "$tmp/good.toml" -o "$tmp/scene.png"
+# An equation far from the origin is rendered in its own frame: expanded at the origin,
+# (x-1e8)^2+y^2+z^2-1 cancels in doubles, and sturm drew 854 hits where there are 368.
+printf '[[surface]]\nequation = "(x-1e8)^2+y^2+z^2-1"\nclip = "sphere"\nclip_center = [1e8, 0, 0]\nclip_radius = 2\n' > "$tmp/far.toml"
+expect "a far equation: sturm and laguerre draw the certified picture" 0 "" -- bash -c \
+    "for m in certified sturm laguerre; do \"$locus\" render \"$tmp/far.toml\" -o \"$tmp/far.png\" --size 48x48 --method \$m 2>&1 | grep -o '[0-9]* hits'; done | uniq | wc -l | grep -qx 1"
 printf '[[object]]\ntype = "smooth_union"\nk = 0.3\n[[object.children]]\ntype = "sphere"\n[[object.children]]\ntype = "algebraic"\nparam = "bench/data/implicit/steiner_roman.param"\nscale = 2\n' > "$tmp/tree.toml"
 expect "render an SDF scene with an implicitized leaf" 0 "primitive evaluations per primary ray" -- \
     "$locus" render "$tmp/tree.toml" -o "$tmp/tree.png" --size 24x16
