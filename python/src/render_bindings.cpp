@@ -114,6 +114,7 @@ py::tuple render_surface(const RenderRequest& request, std::optional<double> tim
         } else {
             compiled = cli::compile_surfaces(scene, deadline);
         }
+        cli::frame_far_equations(scene, compiled);  // as `locus render` does
         render::fit_clip_regions(scene, compiled, false, deadline);
         apply_camera(request, scene);
         render::ExecutionSettings execution;

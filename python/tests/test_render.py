@@ -64,6 +64,19 @@ def test_scene_file(source_dir):
     assert image.shape == (24, 32, 3)
 
 
+def test_an_equation_far_from_the_origin_is_the_same_picture_by_every_method(tmp_path):
+    # Expanded at the origin its terms are 1e16 times its values: sturm drew 854 hits of 368.
+    scene = tmp_path / "far.toml"
+    scene.write_text('[[surface]]\nequation = "(x-1e8)^2+y^2+z^2-1"\nclip = "sphere"\n'
+                     "clip_center = [1e8, 0, 0]\nclip_radius = 2\n")
+    certified = locus.render(str(scene), size=(48, 48), method="certified")
+    sturm = locus.render(str(scene), size=(48, 48), method="sturm")
+    background = np.asarray(certified)[0, 0].astype(int)
+    lit = (np.abs(np.asarray(certified).astype(int) - background).sum(axis=2) > 0).sum()
+    assert 300 < lit < 450
+    assert (np.asarray(certified) == np.asarray(sturm)).all()
+
+
 def test_trace_against_the_quadratic_formula():
     rng = random.Random(11)
     origins, directions, expected = [], [], []
