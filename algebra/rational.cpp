@@ -65,14 +65,13 @@ bool Rational::from_literal(std::string_view text, Rational& out) {
             exponent.remove_prefix(1);
         }
         Rational mantissa;
-        if (!all_digits(exponent) || exponent.size() > 3 ||
+        // (Four digits are past kMaxDecimalExponent already, and within std::stoi's range.)
+        if (!all_digits(exponent) || exponent.size() > 4 ||
+            std::stoi(std::string(exponent)) > kMaxDecimalExponent ||
             !from_literal(text.substr(0, e), mantissa)) {
             return false;
         }
         const int power = std::stoi(std::string(exponent));
-        if (power > kMaxDecimalExponent) {
-            return false;
-        }
         Integer scale;
         fmpz_set_ui(scale.get(), 10);
         fmpz_pow_ui(scale.get(), scale.get(), static_cast<ulong>(power));

@@ -98,7 +98,6 @@ void require_rationals(const algebra::IdealFile& ideal, const std::string& path)
     }
 }
 
-// The generators of `path`, moved into `ring` (same variable names, any declared order).
 // The zero ideal (a file of no non-zero generator) as the one generator 0: the library then
 // knows its ring, and every operation has its answer (I : 0 = ⟨1⟩, I ∩ 0 = 0, f ∈ 0 iff f = 0).
 std::vector<algebra::Polynomial> with_zero_generator(std::vector<algebra::Polynomial> generators,
@@ -109,6 +108,7 @@ std::vector<algebra::Polynomial> with_zero_generator(std::vector<algebra::Polyno
     return generators;
 }
 
+// The generators of `path`, moved into `ring` (same variable names, any declared order).
 std::vector<algebra::Polynomial> generators_in(const std::string& path,
                                                const algebra::RingPtr& ring) {
     const algebra::IdealFile other = read_ideal(path);

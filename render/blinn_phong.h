@@ -72,7 +72,7 @@ Vec3 blinn_phong(const Material& material, const FacingSide& side, const Vec3& p
         if (light.kind == Light::Kind::point) {
             to_light = light.position - point;
             distance = scaled_length(to_light);  // a light 1e200 away is not at infinity
-            to_light = scaled_normalize(to_light);
+            to_light /= distance;
         }
         const double cosine = glm::dot(n, to_light);
         if (cosine <= 0.0) {

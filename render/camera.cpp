@@ -35,7 +35,7 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
     }
     const Vec3 up = scaled_normalize(spec.up);
     const Vec3 side = glm::cross(forward_, up);
-    if (!(glm::length(side) > 1e-9) || up == Vec3(0.0)) {
+    if (!(glm::length(side) > 1e-9)) {  // also a zero or non-finite up
         throw InputError("camera.up " + format_vec(spec.up),
                          "the up vector must be non-zero and not parallel to the viewing "
                          "direction");

@@ -114,8 +114,7 @@ EmptyPictureReason why_not_hit(const Surface& surface, const algebra::CompiledPo
             extent->kind == SurfaceExtent::Kind::bounded ? Remedy::fit : Remedy::none};
     }
     const ClipSphere visible = bounding_sphere(ClipRegion(*inside));
-    const Vec3 view = camera.target - camera.eye;
-    const Vec3 forward = glm::normalize(view / largest_component(view));
+    const Vec3 forward = scaled_normalize(camera.target - camera.eye);
     const Vec3 to_centre = visible.center - camera.eye;
     const double distance = scaled_length(to_centre);
     const double along = glm::dot(to_centre, forward);

@@ -48,7 +48,7 @@ CameraSpec default_camera(const Scene& scene) {
     camera.eye = center + distance * glm::normalize(Vec3{0.55, 0.45, 1.0});
     const bool eye_finite =
         std::isfinite(camera.eye.x) && std::isfinite(camera.eye.y) && std::isfinite(camera.eye.z);
-    if (!std::isfinite(distance) || !eye_finite || camera.eye == camera.target) {
+    if (!eye_finite || camera.eye == camera.target) {  // a NaN or infinite distance included
         char extent[160];
         std::snprintf(extent, sizeof extent, "(%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)", low.x,
                       low.y, low.z, high.x, high.y, high.z);

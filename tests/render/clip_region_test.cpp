@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace locus::render {
@@ -46,6 +47,54 @@ TEST(ClipRegion, SphereIntervalsAreTheSameAtEveryScale) {
         }
     }
     EXPECT_GT(crossing, 500);  // 893 with this seed
+}
+
+// The same against an oracle that shares no code with clip(): the definition evaluated in long
+// double (x87's 15-bit exponent holds the squares of 1e300), on near-tangent rays whose closest
+// approach to the centre is r·(1 + δ) for |δ| from 1e-9 to 1e-3: a ray crosses exactly when
+// δ < 0, and both ends of its interval lie on the sphere.
+TEST(ClipRegion, NearTangentRaysAgreeWithTheDefinitionInLongDouble) {
+    static_assert(std::numeric_limits<long double>::max_exponent10 > 600);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto random_unit = [&] {
+        const Vec3 v{unit(random), unit(random), unit(random)};
+        return v / glm::length(v);
+    };
+    int crossing = 0, passing = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 d = random_unit();
+        const Vec3 w = glm::normalize(glm::cross(d, random_unit()));  // perpendicular to d
+        const double delta = (i % 2 == 0 ? -1.0 : 1.0) * std::pow(10.0, -9.0 + 6.0 * (i % 7) / 6.0);
+        for (const double s : {1e-300, 1e-150, 1e-20, 1.0, 1e20, 1e150, 1e300}) {
+            const Vec3 centre = s * Vec3{unit(random), unit(random), unit(random)};
+            const double radius = s * (0.5 + std::abs(unit(random)));
+            const Vec3 origin = centre + (-3.0 * radius) * d + (radius * (1.0 + delta)) * w;
+            const Vec3 direction = d * (0.25 + std::abs(unit(random)));
+            const Interval in =
+                clip(ClipSphere{centre, radius}, {origin, direction}, {-INFINITY, INFINITY});
+            if (delta > 0.0) {
+                EXPECT_TRUE(in.is_empty()) << i << " at " << s;
+                ++passing;
+                continue;
+            }
+            ASSERT_FALSE(in.is_empty()) << i << " at " << s;
+            ++crossing;
+            for (const double t : {in.lo, in.hi}) {
+                long double squared = 0.0L;
+                for (int k = 0; k < 3; ++k) {
+                    const long double q = static_cast<long double>(origin[k]) +
+                                          static_cast<long double>(t) * direction[k] - centre[k];
+                    squared += q * q;
+                }
+                const long double relative = std::sqrt(squared) / radius - 1.0L;
+                EXPECT_LT(std::abs(static_cast<double>(relative)), 1e-9)
+                    << i << " at " << s << ", delta " << delta;
+            }
+        }
+    }
+    EXPECT_GT(crossing, 3000);
+    EXPECT_GT(passing, 3000);
 }
 
 }  // namespace

@@ -121,8 +121,12 @@ TEST(Render, ASphereIsTheSamePictureAtEveryScale) {
         }
         return hit;
     };
+    // The oracle: exact isolation over Q at the unit scale, which the certified method at unit
+    // scale must match too.
+    const std::vector<bool> exact_unit = hits_at("1", "1", 1.0, TraceMethod::exact);
+    EXPECT_EQ(hits_at("1", "1", 1.0, TraceMethod::certified), exact_unit);
     for (const TraceMethod method : {TraceMethod::certified, TraceMethod::exact}) {
-        const std::vector<bool> unit = hits_at("1", "1", 1.0, method);
+        const std::vector<bool>& unit = exact_unit;
         EXPECT_GT(std::count(unit.begin(), unit.end(), true), 24 * 24 / 20);
         EXPECT_EQ(hits_at("1e200", "1e400", 1e200, method), unit);
         EXPECT_EQ(hits_at("1e100", "1e200", 1e100, method), unit);
