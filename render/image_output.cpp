@@ -47,8 +47,8 @@ WriteFunction image_writer() {
 // the frame, the conversion was 2–3 % of a 512² low-degree render's CPU time, all of it on the
 // whole command's critical path. (`locus render --threads N` bounds this too: the command caps
 // TBB's parallelism for all its phases.)
-std::vector<std::uint8_t> srgb8_of(const RenderedImage& image) {
-    std::vector<std::uint8_t> srgb(image.color.size());
+PixelBuffer<std::uint8_t> srgb8_of(const RenderedImage& image) {
+    PixelBuffer<std::uint8_t> srgb(image.color.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, srgb.size(), std::size_t{1} << 14),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                           for (std::size_t k = range.begin(); k < range.end(); ++k) {
@@ -153,7 +153,7 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
     if (is_float_format(path)) {
         write_channels(path, image.width, image.height, 3, image.color.data(), true, true);
     } else {
-        const std::vector<std::uint8_t> srgb = srgb8_of(image);
+        const PixelBuffer<std::uint8_t> srgb = srgb8_of(image);
         write_channels(path, image.width, image.height, 3, srgb.data(), false, false);
     }
     written.push_back(path);
@@ -173,7 +173,7 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
 }
 
 std::string png_bytes(const RenderedImage& image) {
-    const std::vector<std::uint8_t> srgb = srgb8_of(image);
+    const PixelBuffer<std::uint8_t> srgb = srgb8_of(image);
     std::optional<std::string> png = detail::encode_png(image.width, image.height, srgb.data());
     if (!png) {
         throw Error("the PNG encoder failed");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "algebra/compiled.h"
+#include "render/large_page_allocator.h"
 #include "render/scene.h"
 
 namespace locus::render {
@@ -24,7 +25,7 @@ inline constexpr double kMaxImagePixels = 8192.0 * 8192.0;
 struct RenderedImage {
     int width = 0;
     int height = 0;
-    std::vector<float> color;  // RGB, linear, row-major from the top row
+    PixelBuffer<float> color;  // RGB, linear, row-major from the top row
     std::vector<float> depth;  // distance from the eye to the first hit (+inf on a miss), per pixel
     std::vector<float> normal;  // unit normal, xyz per pixel, zero on a miss
     std::vector<float> work;    // root-finder work (steps or iterations) summed over the samples
