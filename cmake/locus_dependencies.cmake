@@ -24,8 +24,12 @@ pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 find_package(tomlplusplus CONFIG REQUIRED)
 # The web server of `locus view` (view/).
 pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
-# PNG without OpenImageIO (render/detail/plain_image_file.cpp).
-pkg_check_modules(SPNG REQUIRED IMPORTED_TARGET spng)
+# PNG without OpenImageIO (render/detail/png_encoder.cpp).
+find_package(ZLIB REQUIRED)
+if(LOCUS_BUILD_TESTS)
+    # A PNG decoder that shares no code with the encoder (tests/render/png_encoder_test.cpp).
+    pkg_check_modules(SPNG REQUIRED IMPORTED_TARGET spng)
+endif()
 if(LOCUS_BUILD_TESTS)
     find_package(GTest REQUIRED)
     include(GoogleTest)

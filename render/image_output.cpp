@@ -7,11 +7,11 @@
 
 #include <unistd.h>  // for access
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "algebra/error.h"
 #include "render/detail/plain_image_file.h"
+#include "render/detail/png_encoder.h"
 #include "render/loadable_module.h"
 #include "render/shading.h"
 
@@ -43,39 +43,33 @@ WriteFunction image_writer() {
 }
 #endif
 
-// The 8-bit sRGB codes of the linear colours, in blocks side by side: done on one thread after
-// the frame, the conversion was 2–3 % of a 512² low-degree render's CPU time, all of it on the
-// whole command's critical path. (`locus render --threads N` bounds this too: the command caps
-// TBB's parallelism for all its phases.)
+// The 8-bit sRGB codes of the colours of row y.
+void srgb8_row(const RenderedImage& image, int y, std::uint8_t* rgb) {
+    const std::size_t row_bytes = 3 * static_cast<std::size_t>(image.width);
+    to_srgb8(image.color.data() + row_bytes * static_cast<std::size_t>(y), rgb, row_bytes);
+}
+
+// The 8-bit sRGB codes of the whole image, for the formats OpenImageIO writes, rows side by
+// side: on one thread after the frame the conversion was 2–3 % of a 512² low-degree render's
+// CPU time, all of it on the whole command's critical path. (`locus render --threads N` bounds
+// this too: the command caps TBB's parallelism for all its phases.) PNG and PPM convert row by
+// row as they encode.
 PixelBuffer<std::uint8_t> srgb8_of(const RenderedImage& image) {
     PixelBuffer<std::uint8_t> srgb(image.color.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, srgb.size(), std::size_t{1} << 14),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t k = range.begin(); k < range.end(); ++k) {
-                              srgb[k] = to_srgb8(image.color[k]);
-                          }
-                      });
+    const std::size_t row_bytes = 3 * static_cast<std::size_t>(image.width);
+    tbb::parallel_for(0, image.height,
+                      [&](int y) { srgb8_row(image, y, srgb.data() + row_bytes * y); });
     return srgb;
 }
 
-// 8-bit PNG and PPM go through detail::write_plain_image, every other format and every float
-// image through the OpenImageIO module: the common case never pays for loading it. Written
-// under partial_path(path) and renamed when complete, so that a failure (a full disk, a
-// timeout) never leaves a truncated image under the name asked for.
-void write_channels(const std::string& path, int width, int height, int channels, const void* data,
-                    bool data_is_float, bool file_is_half) {
+// Writes `path` through `write`, which writes the file named by its argument and returns what
+// went wrong ("" on success). Written under partial_path(path) and renamed when complete, so
+// that a failure (a full disk, a timeout) never leaves a truncated image under the name asked
+// for.
+template <class Write>
+void write_through_partial(const std::string& path, const Write& write) {
     const std::string partial = partial_path(path);
-    std::string failure_message;
-    if (!data_is_float && channels == 3 && detail::is_plain_image_format(path)) {
-        failure_message = detail::write_plain_image(partial, width, height,
-                                                    static_cast<const std::uint8_t*>(data));
-    } else {
-        char error[512] = "";
-        if (image_writer()(partial.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
-                           file_is_half ? 1 : 0, error, sizeof error) != 0) {
-            failure_message = error;
-        }
-    }
+    const std::string failure_message = write(partial);
     if (!failure_message.empty()) {
         std::remove(partial.c_str());
         throw ResourceLimit("cannot write '" + path + "': " + failure_message);
@@ -86,6 +80,19 @@ void write_channels(const std::string& path, int width, int height, int channels
         std::remove(partial.c_str());
         throw ResourceLimit("cannot write '" + path + "': " + failure.message());
     }
+}
+
+// Every format but 8-bit PNG and PPM, and every float image, through the OpenImageIO module:
+// the common case never pays for loading it.
+void write_channels(const std::string& path, int width, int height, int channels, const void* data,
+                    bool data_is_float, bool file_is_half) {
+    write_through_partial(path, [&](const std::string& partial) {
+        char error[512] = "";
+        return image_writer()(partial.c_str(), width, height, channels, data, data_is_float ? 1 : 0,
+                              file_is_half ? 1 : 0, error, sizeof error) != 0
+                   ? std::string(error)
+                   : std::string();
+    });
 }
 
 bool is_float_format(const std::string& path) {
@@ -152,6 +159,12 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
     std::vector<std::string> written;
     if (is_float_format(path)) {
         write_channels(path, image.width, image.height, 3, image.color.data(), true, true);
+    } else if (detail::is_plain_image_format(path)) {
+        write_through_partial(path, [&](const std::string& partial) {
+            return detail::write_plain_image(
+                partial, image.width, image.height,
+                [&](int y, std::uint8_t* rgb) { srgb8_row(image, y, rgb); });
+        });
     } else {
         const PixelBuffer<std::uint8_t> srgb = srgb8_of(image);
         write_channels(path, image.width, image.height, 3, srgb.data(), false, false);
@@ -173,12 +186,8 @@ std::vector<std::string> write_image(const RenderedImage& image, const std::stri
 }
 
 std::string png_bytes(const RenderedImage& image) {
-    const PixelBuffer<std::uint8_t> srgb = srgb8_of(image);
-    std::optional<std::string> png = detail::encode_png(image.width, image.height, srgb.data());
-    if (!png) {
-        throw Error("the PNG encoder failed");
-    }
-    return std::move(*png);
+    return detail::encode_png(image.width, image.height,
+                              [&](int y, std::uint8_t* rgb) { srgb8_row(image, y, rgb); });
 }
 
 }  // namespace locus::render

@@ -1,4 +1,4 @@
-// Writing rendered images: PNG and PPM directly (libspng), every other format with
+// Writing rendered images: PNG and PPM directly (zlib, in parallel), every other format with
 // OpenImageIO, loaded only then. The colour image goes to `path` in the format its
 // extension names: 8-bit sRGB for PNG/JPEG/TIFF and the like, linear half floats for EXR.
 // Requested AOVs go beside it as EXR files named <stem>.<aov>.exr (depth: one channel, the
@@ -24,13 +24,12 @@ void check_image_path(const std::string& path);
 // Where an image is written before it is complete: ".locus-partial.NAME" beside it.
 std::string partial_path(const std::string& path);
 
-// Throws ResourceLimit with OpenImageIO's message when a file cannot be written (nothing is
+// Throws ResourceLimit with the writer's message when a file cannot be written (nothing is
 // left under its name). Returns the paths written, the colour image first.
-// The colour of `image` as an 8-bit sRGB PNG in memory (for frames sent over HTTP); throws
-// Error when the encoder fails.
-std::string png_bytes(const RenderedImage& image);
-
 std::vector<std::string> write_image(const RenderedImage& image, const std::string& path,
                                      const std::vector<Aov>& aovs = {});
+
+// The colour of `image` as an 8-bit sRGB PNG in memory (for frames sent over HTTP).
+std::string png_bytes(const RenderedImage& image);
 
 }  // namespace locus::render

@@ -225,9 +225,25 @@ class Srgb8Table {
 
 }  // namespace
 
-std::uint8_t to_srgb8(double linear) {
+namespace {
+
+const Srgb8Table& srgb8_table() {
     static const Srgb8Table table;
-    return table(linear > 0.0 ? std::min(linear, 1.0) : 0.0);  // NaN → 0
+    return table;
+}
+
+}  // namespace
+
+std::uint8_t to_srgb8(double linear) {
+    return srgb8_table()(linear > 0.0 ? std::min(linear, 1.0) : 0.0);  // NaN → 0
+}
+
+void to_srgb8(const float* linear, std::uint8_t* codes, std::size_t n) {
+    const Srgb8Table& table = srgb8_table();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double c = linear[i];
+        codes[i] = table(c > 0.0 ? std::min(c, 1.0) : 0.0);
+    }
 }
 
 }  // namespace locus::render

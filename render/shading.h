@@ -7,6 +7,7 @@
 // outside colour is used, so no pixel is ever NaN.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -59,5 +60,7 @@ class Shader {
 
 // Linear radiance to an 8-bit sRGB channel value.
 std::uint8_t to_srgb8(double linear);
+// The same for n channels at once: codes[i] = to_srgb8(linear[i]).
+void to_srgb8(const float* linear, std::uint8_t* codes, std::size_t n);
 
 }  // namespace locus::render

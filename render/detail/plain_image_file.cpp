@@ -8,9 +8,10 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
-#include <optional>
 
-#include <spng.h>
+#include <tbb/parallel_for.h>
+
+#include "render/large_page_allocator.h"
 
 namespace locus::render::detail {
 
@@ -20,10 +21,6 @@ struct FileCloser {
     void operator()(std::FILE* file) const { std::fclose(file); }
 };
 using File = std::unique_ptr<std::FILE, FileCloser>;
-
-struct SpngFree {
-    void operator()(spng_ctx* context) const { spng_ctx_free(context); }
-};
 
 // Flushes and closes, reporting a failed write (a full disk shows up at the flush, not at
 // fwrite).
@@ -35,54 +32,19 @@ std::string close_checked(File file) {
     return write_errno != 0 ? std::strerror(write_errno) : std::string();
 }
 
-std::string write_ppm(std::FILE* file, int width, int height, const std::uint8_t* rgb) {
-    std::fprintf(file, "P6\n%d %d\n255\n", width, height);
-    const std::size_t size = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
-    if (std::fwrite(rgb, 1, size, file) != size) {
+bool write_all(std::FILE* file, const void* data, std::size_t size) {
+    return std::fwrite(data, 1, size, file) == size;
+}
+
+std::string write_ppm(std::FILE* file, int width, int height, const RgbRowSource& row) {
+    const std::size_t row_bytes = 3 * static_cast<std::size_t>(width);
+    PixelBuffer<std::uint8_t> rgb(row_bytes * static_cast<std::size_t>(height));
+    tbb::parallel_for(0, height, [&](int y) { row(y, rgb.data() + row_bytes * y); });
+    const std::string header =
+        "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+    if (!write_all(file, header.data(), header.size()) ||
+        !write_all(file, rgb.data(), rgb.size())) {
         return std::strerror(errno);
-    }
-    return {};
-}
-
-// The header and the encoding settings every PNG of locus gets, then the pixels; the caller has
-// pointed the context at a file or at its own buffer.
-int encode_rgb(spng_ctx* context, int width, int height, const std::uint8_t* rgb) {
-    spng_ihdr header{};
-    header.width = static_cast<std::uint32_t>(width);
-    header.height = static_cast<std::uint32_t>(height);
-    header.bit_depth = 8;
-    header.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
-    // zlib level 2 and the Sub filter on every row: on a 512² render (a torus, 786 KB of
-    // pixels) 20 ms and 51 KB, where zlib's default level 6 with libspng's adaptive choice of
-    // filters per row (libpng's defaults) took 110 ms for 39 KB, a third of the whole command.
-    // Rendered pictures are mostly flat background and smooth shading, which Sub predicts.
-    int status = spng_set_ihdr(context, &header);
-    if (status == 0) {
-        status = spng_set_option(context, SPNG_IMG_COMPRESSION_LEVEL, 2);
-    }
-    if (status == 0) {
-        status = spng_set_option(context, SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_SUB);
-    }
-    if (status == 0) {
-        const std::size_t size =
-            static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
-        status = spng_encode_image(context, rgb, size, SPNG_FMT_PNG, SPNG_ENCODE_FINALIZE);
-    }
-    return status;
-}
-
-std::string write_png(std::FILE* file, int width, int height, const std::uint8_t* rgb) {
-    std::unique_ptr<spng_ctx, SpngFree> context(spng_ctx_new(SPNG_CTX_ENCODER));
-    if (!context) {
-        return "cannot create a PNG encoder";
-    }
-    int status = spng_set_png_file(context.get(), file);
-    if (status == 0) {
-        status = encode_rgb(context.get(), width, height, rgb);
-    }
-    if (status != 0) {
-        // libspng reports a short write as SPNG_IO_ERROR; errno says why (ENOSPC, EIO, ...).
-        return status == SPNG_IO_ERROR && errno != 0 ? std::strerror(errno) : spng_strerror(status);
     }
     return {};
 }
@@ -102,36 +64,27 @@ bool is_plain_image_format(const std::string& path) {
 }
 
 std::string write_plain_image(const std::string& path, int width, int height,
-                              const std::uint8_t* rgb) {
+                              const RgbRowSource& row) {
+    // A PNG is encoded whole before the file is opened: the bands are compressed in parallel,
+    // and a PNG of a frame is small (50–100 KB at 512²).
+    const bool png = lowercase_extension(path) == ".png";
+    const std::string encoded = png ? encode_png(width, height, row) : std::string();
     errno = 0;
     File file(std::fopen(path.c_str(), "wb"));
     if (!file) {
         return std::strerror(errno);
     }
-    const std::string failure = lowercase_extension(path) == ".png"
-                                    ? write_png(file.get(), width, height, rgb)
-                                    : write_ppm(file.get(), width, height, rgb);
-    if (!failure.empty()) {
-        return failure;
+    if (png) {
+        if (!write_all(file.get(), encoded.data(), encoded.size())) {
+            return std::strerror(errno);
+        }
+    } else {
+        const std::string failure = write_ppm(file.get(), width, height, row);
+        if (!failure.empty()) {
+            return failure;
+        }
     }
     return close_checked(std::move(file));
-}
-
-std::optional<std::string> encode_png(int width, int height, const std::uint8_t* rgb) {
-    std::unique_ptr<spng_ctx, SpngFree> context(spng_ctx_new(SPNG_CTX_ENCODER));
-    if (!context || spng_set_option(context.get(), SPNG_ENCODE_TO_BUFFER, 1) != 0 ||
-        encode_rgb(context.get(), width, height, rgb) != 0) {
-        return std::nullopt;
-    }
-    std::size_t length = 0;
-    int status = 0;
-    void* buffer = spng_get_png_buffer(context.get(), &length, &status);
-    if (buffer == nullptr || status != 0) {
-        return std::nullopt;
-    }
-    std::string png(static_cast<const char*>(buffer), length);
-    std::free(buffer);  // the buffer is the caller's, allocated with malloc
-    return png;
 }
 
 }  // namespace locus::render::detail

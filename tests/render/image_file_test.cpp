@@ -1,9 +1,10 @@
-// The colour image written without OpenImageIO (PNG through libspng, PPM by hand) must read
+// The colour image written without OpenImageIO (PNG by render/detail/png_encoder, PPM) must read
 // back, through OpenImageIO, as exactly the 8-bit sRGB pixels the renderer produced; failed
 // writes must be reported and leave nothing under the name asked for.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -51,20 +52,23 @@ std::filesystem::path scratch(const std::string& name) {
 }
 
 TEST(ImageFile, PngReadsBackAsTheRenderedPixels) {
-    const RenderedImage image = gradient_image(37, 23);  // odd sizes: no row padding hides
-    const std::filesystem::path path = scratch("gradient.png");
-    write_image(image, path.string());
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
-    ASSERT_TRUE(in) << OIIO::geterror();
-    const OIIO::ImageSpec& spec = in->spec();
-    EXPECT_EQ(spec.width, 37);
-    EXPECT_EQ(spec.height, 23);
-    EXPECT_EQ(spec.nchannels, 3);
-    EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
-    std::vector<std::uint8_t> pixels(37 * 23 * 3);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
-    EXPECT_EQ(pixels, expected_srgb(image));
-    EXPECT_FALSE(std::filesystem::exists(partial_path(path.string())));
+    // Odd sizes, so that no row padding hides; 23 rows are one band of the encoder, 230 several.
+    for (const int height : {23, 230}) {
+        const RenderedImage image = gradient_image(37, height);
+        const std::filesystem::path path = scratch("gradient.png");
+        write_image(image, path.string());
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
+        ASSERT_TRUE(in) << OIIO::geterror();
+        const OIIO::ImageSpec& spec = in->spec();
+        EXPECT_EQ(spec.width, 37);
+        EXPECT_EQ(spec.height, height);
+        EXPECT_EQ(spec.nchannels, 3);
+        EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
+        std::vector<std::uint8_t> pixels(37 * static_cast<std::size_t>(height) * 3);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+        EXPECT_EQ(pixels, expected_srgb(image)) << height;
+        EXPECT_FALSE(std::filesystem::exists(partial_path(path.string())));
+    }
 }
 
 TEST(ImageFile, PpmIsBinaryP6WithTheRenderedPixels) {
@@ -93,14 +97,14 @@ TEST(ImageFile, AFullDeviceIsAReportedFailure) {
     if (!std::filesystem::exists("/dev/full")) {
         GTEST_SKIP() << "no /dev/full";
     }
-    const std::vector<std::uint8_t> pixels(64 * 64 * 3, 200);
+    const auto grey = [](int, std::uint8_t* rgb) { std::fill_n(rgb, 64 * 3, 200); };
     // /dev/full accepts the open and fails every write with ENOSPC: the failure must surface
     // from the buffered writes or the final flush, for both formats (named through links).
     for (const char* name : {"full.png", "full.ppm"}) {
         const std::filesystem::path link = scratch(name);
         std::filesystem::remove(link);
         std::filesystem::create_symlink("/dev/full", link);
-        EXPECT_NE(detail::write_plain_image(link.string(), 64, 64, pixels.data()), "") << name;
+        EXPECT_NE(detail::write_plain_image(link.string(), 64, 64, grey), "") << name;
     }
 }
 

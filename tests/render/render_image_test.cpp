@@ -204,6 +204,23 @@ TEST(Srgb8, TheTableEncodesAsTheTransferFunction) {
     EXPECT_EQ(to_srgb8(std::nan("")), 0);
 }
 
+TEST(Srgb8, ARowEncodesAsItsChannels) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<float> wide(-0.5f, 1.5f);
+    std::vector<float> linear(3001);
+    for (float& c : linear) {
+        c = wide(random);
+    }
+    linear[7] = std::nanf("");
+    linear[8] = INFINITY;
+    linear[9] = -INFINITY;
+    std::vector<std::uint8_t> codes(linear.size());
+    to_srgb8(linear.data(), codes.data(), linear.size());
+    for (std::size_t i = 0; i < linear.size(); ++i) {
+        ASSERT_EQ(codes[i], srgb8_reference(std::isnan(linear[i]) ? 0.0 : linear[i])) << i;
+    }
+}
+
 }  // namespace
 }  // namespace locus::render
 
