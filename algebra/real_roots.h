@@ -23,7 +23,8 @@ std::optional<double> first_real_root(const fmpz_poly_t p, const fmpq_t lo, cons
 // out = the rational number the finite double v denotes, exactly (v = m·2^(e−53)).
 void set_exact_double(fmpq_t out, double v);
 
-// The double nearest to t (fmpq_get_d alone may round either way); ±∞ beyond the range.
+// The double nearest to t, ties to even as IEEE rounds (fmpq_get_d alone may round either
+// way); ±∞ beyond the range.
 double nearest_double(const fmpq_t t);
 
 }  // namespace locus::algebra

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include "algebra/error.h"
 #include "cli/choices.h"
@@ -298,6 +300,10 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     int frames = args.turntable.value_or(0);  // 0: one still picture
     render::ExecutionSettings execution;
     execution.deadline = deadline;
+    // oneTBB starts on first use: it loads its allocator library, maps its pools and starts its
+    // worker threads, about a millisecond and a hundred page faults. Started here on another
+    // thread, that overlaps reading and compiling the scene on this one (joined on return).
+    const std::jthread start_tbb([] { tbb::parallel_for(0, 2, [](int) {}); });
     render::Scene scene;
     std::vector<render::Aov> aovs;
     try {

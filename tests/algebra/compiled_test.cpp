@@ -424,3 +424,66 @@ TEST(FirstRealRoot, RandomRootsAreFoundToTheNearestDouble) {
 
 }  // namespace
 }  // namespace locus::algebra
+
+#include <mpfr.h>
+
+namespace locus::algebra {
+namespace {
+
+// nearest_double against MPFR's correctly rounded conversion (a library that shares no code with
+// it): small quotients (the direct division), quotients at the 53-bit edge, and large ones (the
+// search around fmpq_get_d).
+TEST(NearestDouble, AgreesWithMpfrRoundingToNearest) {
+    std::mt19937_64 random(53);
+    mpfr_t rounded;
+    mpfr_init2(rounded, 53);
+    mpq_t exact;
+    mpq_init(exact);
+    fmpq_t t;
+    fmpq_init(t);
+    const auto check = [&](const fmpz_t numerator, const fmpz_t denominator) {
+        if (fmpz_is_zero(denominator)) {
+            return;
+        }
+        fmpq_set_fmpz_frac(t, numerator, denominator);
+        fmpq_get_mpq(exact, t);
+        mpfr_set_q(rounded, exact, MPFR_RNDN);
+        ASSERT_EQ(nearest_double(t), mpfr_get_d(rounded, MPFR_RNDN))
+            << fmpq_get_str(nullptr, 10, t);
+    };
+    fmpz_t numerator, denominator;
+    fmpz_init(numerator);
+    fmpz_init(denominator);
+    for (int i = 0; i < 20000; ++i) {
+        const int bits = 1 + static_cast<int>(random() % 70);  // across the 53-bit edge
+        const int denominator_bits = 1 + static_cast<int>(random() % 70);
+        fmpz_set_ui(numerator, random());
+        fmpz_mul_2exp(numerator, numerator, 64);
+        fmpz_add_ui(numerator, numerator, random());
+        fmpz_fdiv_r_2exp(numerator, numerator, static_cast<ulong>(bits));
+        fmpz_set_ui(denominator, random());
+        fmpz_mul_2exp(denominator, denominator, 64);
+        fmpz_add_ui(denominator, denominator, random());
+        fmpz_fdiv_r_2exp(denominator, denominator, static_cast<ulong>(denominator_bits));
+        if (i % 2 == 1) {
+            fmpz_neg(numerator, numerator);
+        }
+        check(numerator, denominator);
+    }
+    // The ends of the direct division: ±2^53 and 2^53 − 1 over 2^53, 3, 2^53 − 1.
+    for (const slong n : {slong{1} << 53, -(slong{1} << 53), (slong{1} << 53) - 1, slong{1}}) {
+        for (const slong d : {slong{1} << 53, slong{3}, (slong{1} << 53) - 1, slong{1}}) {
+            fmpz_set_si(numerator, n);
+            fmpz_set_si(denominator, d);
+            check(numerator, denominator);
+        }
+    }
+    fmpz_clear(numerator);
+    fmpz_clear(denominator);
+    fmpq_clear(t);
+    mpq_clear(exact);
+    mpfr_clear(rounded);
+}
+
+}  // namespace
+}  // namespace locus::algebra
