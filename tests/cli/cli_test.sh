@@ -8,6 +8,17 @@ trap 'rm -rf "$tmp"' EXIT
 source "$(dirname "$0")/expect.sh"
 
 known=tests/data/known
+# Only the subcommand named first is built (cli/main.cpp): its help has its options, the top-level
+# help lists every subcommand, and a name that is not one is still refused with the list.
+expect "top-level help lists every subcommand" 0 "view" -- "$locus" --help
+expect "top-level help lists groebner" 0 "groebner" -- "$locus" --help
+expect "render's help has its options" 0 "--clip-radius" -- "$locus" render --help
+expect "groebner's help has its options" 0 "--algorithm" -- "$locus" groebner --help
+expect "an unknown subcommand is refused" 2 "A subcommand is required" -- "$locus" rendr x
+expect "a subcommand's option before it is refused" 2 "" -- "$locus" --clip-radius 2 render x
+# The process ends with _Exit after run_app: what went to a pipe must all be there.
+expect "output through a pipe is complete" 0 "" -- \
+    bash -c "\"$locus\" groebner $known/cyclic4_lex.ideal | cat | diff - $known/cyclic4_lex.expected"
 expect "groebner prints the expected basis" 0 "" -- \
     bash -c "\"$locus\" groebner $known/cyclic4_lex.ideal | diff - $known/cyclic4_lex.expected"
 expect "groebner reads standard input" 0 "" -- \
