@@ -23,10 +23,12 @@ constexpr double kUnderflow = 0x1.0p-1040;
 
 // Binomial coefficients C(n, k) for n ≤ kMaxDegree: exact in 64-bit integers (C(64, 32) < 2^61),
 // and as doubles rounded once from them (exact up to C(56, 28) < 2^53).
+// Computed at compile time: built at the first frame, the table's 67 KB were 16 page faults
+// of fresh memory (about 11 µs each here); in the executable they are read-only data.
 struct Binomials {
     std::array<std::array<long long, kMaxDegree + 1>, kMaxDegree + 1> exact{};
     std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> c{};
-    Binomials() {
+    constexpr Binomials() {
         for (int n = 0; n <= kMaxDegree; ++n) {
             exact[n][0] = exact[n][n] = 1;
             for (int k = 1; k < n; ++k) {
@@ -38,9 +40,9 @@ struct Binomials {
         }
     }
 };
+constexpr Binomials kBinomials;
 const Binomials& binomials() {
-    static const Binomials table;
-    return table;
+    return kBinomials;
 }
 
 // β[n][i][k]: Bernstein coefficient i (degree n, on [−1, 1]) of x^k, i.e. x^k =
