@@ -450,8 +450,8 @@ RootResult CertifiedTracer::search(const Ray& ray, Interval interval, double tol
 }
 
 RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0, double width,
-                                           const Ray& ray, Interval interval, double tolerance,
-                                           NeighbourHint* hint) const {
+                                           const Ray& ray, const Interval& interval,
+                                           double tolerance, NeighbourHint* hint) const {
     NeighbourHint unused;
     NeighbourHint& next = hint != nullptr ? *hint : unused;
     const NeighbourHint guess = next;

@@ -84,7 +84,7 @@ class CertifiedTracer {
     // certain; the ray is traced alone (first_hit) where it is not. `hint`, when given, guides
     // the search and is updated for the next ray.
     RootResult first_hit_from(const BernsteinBall& ball, double t0, double width, const Ray& ray,
-                              Interval interval, double tolerance,
+                              const Interval& interval, double tolerance,
                               NeighbourHint* hint = nullptr) const;
 
     // Statistics of the tiers (for tests and benchmarks) are in RootResult::decided_by.

@@ -114,7 +114,7 @@ void PrimaryTracer::begin_row(double image_y, Row& row) const {
 }
 
 RootResult PrimaryTracer::first_hit(Row& row, double image_x, const Ray& ray,
-                                    Interval interval) const {
+                                    const Interval& interval) const {
     RootResult hit;
     switch (family_) {
     case Family::floating:

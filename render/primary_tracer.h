@@ -34,7 +34,7 @@ class PrimaryTracer {
     };
     void begin_row(double image_y, Row& row) const;
     // The first hit of camera.ray(image_x, image_y) (image_y as in begin_row) in `interval`.
-    RootResult first_hit(Row& row, double image_x, const Ray& ray, Interval interval) const;
+    RootResult first_hit(Row& row, double image_x, const Ray& ray, const Interval& interval) const;
 
   private:
     enum class Family { none, floating, certified };

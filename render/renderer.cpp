@@ -70,7 +70,7 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         }
                         const RootResult hit = first_hit_trimmed(
                             scene.surfaces[s].trim.get(), ray, interval, kTrimTolerance * scale,
-                            surfaces[s].degree(), [&](Interval within) {
+                            surfaces[s].degree(), [&](const Interval& within) {
                                 return primaries[s].first_hit(rows[s], image_x, ray, within);
                             });
                         row_work += hit.work;

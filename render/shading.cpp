@@ -51,7 +51,8 @@ bool Shader::is_occluded(const Ray& ray, double t_max, int& work) const {
             surface.trim == nullptr
                 ? surface.tracer->occluded(ray, interval)
                 : first_hit_trimmed(surface.trim, ray, interval, kTrimTolerance * scale_,
-                                    surface.tracer->polynomial().degree(), [&](Interval within) {
+                                    surface.tracer->polynomial().degree(),
+                                    [&](const Interval& within) {
                                         return surface.tracer->first_hit(ray, within);
                                     });
         work += hit.work;

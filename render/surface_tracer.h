@@ -69,7 +69,7 @@ class SurfaceTracer {
     // For the certified method: the ray's ball from a CertifiedRayFamily, the restriction to
     // [t_start, t_start + t_width] (CertifiedTracer::first_hit_from).
     RootResult first_hit_from(const BernsteinBall& ball, double t_start, double t_width,
-                              const Ray& ray, Interval interval,
+                              const Ray& ray, const Interval& interval,
                               NeighbourHint* hint = nullptr) const {
         return certified_.first_hit_from(ball, t_start, t_width, frame_.to_local(ray), interval,
                                          tolerance_, hint);
