@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <optional>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -111,8 +112,23 @@ Band deflate_band(int width, int first, int last, bool final, const RgbRowSource
     std::vector<std::uint8_t> filtered(row_bytes + 1);
     filtered[0] = kSubFilter;
     // One stream per thread, reset for each band: its 330 KB of state is allocated, and its
-    // pages faulted in, once per thread rather than once per band.
-    thread_local DeflateStream stream;
+    // pages faulted in, once per thread rather than once per band. A band begun while this
+    // thread's stream is busy (a row source that runs parallel work of its own, during which
+    // the thread may take another band) gets a stream of its own.
+    thread_local DeflateStream shared;
+    thread_local bool shared_busy = false;
+    std::optional<DeflateStream> own;
+    DeflateStream& stream = shared_busy ? own.emplace() : shared;
+    const bool holds_shared = !shared_busy;
+    shared_busy = true;
+    struct Release {
+        bool holds;
+        ~Release() {
+            if (holds) {
+                shared_busy = false;
+            }
+        }
+    } release{holds_shared};
     if (deflateReset(&stream.z) != Z_OK) {
         throw Error("zlib deflateReset failed");
     }

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 #include <spng.h>
+#include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -85,6 +88,39 @@ TEST(PngEncoder, RandomPicturesDecodeToTheirRows) {
         EXPECT_EQ(height, h);
         ASSERT_EQ(decoded, picture) << w << "x" << h;
     }
+}
+
+TEST(PngEncoder, ARowSourceThatEncodesItselfStillGetsItsRows) {
+    // A row source that runs encoding work of its own: on the thread of a band in progress,
+    // bands of the inner image must not take the busy compressor over (nor must a thread that
+    // waits in a row source's parallel loop and takes another band meanwhile).
+    std::mt19937_64 random(5);
+    const int w = 97, h = 640;
+    const std::vector<std::uint8_t> picture = random_picture(w, h, random);
+    const std::vector<std::uint8_t> small = random_picture(8, 40, random);
+    const std::size_t row_bytes = 3 * static_cast<std::size_t>(w);
+    std::atomic<int> inner_failures{0};
+    const std::string png = encode_png(w, h, [&](int y, std::uint8_t* rgb) {
+        if (y % 50 == 0) {
+            const std::string inner = encode_png(8, 40, [&](int yy, std::uint8_t* out) {
+                std::copy_n(small.begin() + 24 * yy, 24, out);
+            });
+            int iw = 0, ih = 0;
+            std::string error;
+            if (decode(inner, iw, ih, error) != small) {
+                ++inner_failures;
+            }
+        }
+        tbb::parallel_for(std::size_t{0}, row_bytes, [&](std::size_t i) {
+            rgb[i] = picture[row_bytes * static_cast<std::size_t>(y) + i];
+        });
+    });
+    EXPECT_EQ(inner_failures.load(), 0);
+    int width = 0, height = 0;
+    std::string error;
+    const std::vector<std::uint8_t> decoded = decode(png, width, height, error);
+    ASSERT_EQ(error, "");
+    EXPECT_EQ(decoded, picture);
 }
 
 TEST(PngEncoder, ACorruptedByteIsCaughtByTheDecoder) {
