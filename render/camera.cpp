@@ -2,23 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "algebra/error.h"
 
 namespace locus::render {
-
-namespace {
-// %g, not std::to_string's %f: an eye at 1e-300 printed as (0.000000, …).
-std::string format_vec(const Vec3& v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
-    return text;
-}
-
-}  // namespace
 
 Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
     if (!(spec.fov_degrees > 0.0 && spec.fov_degrees < 180.0)) {
@@ -29,14 +18,14 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : eye_(spec.eye) {
     const Vec3 view = spec.target - spec.eye;
     forward_ = scaled_normalize(view);
     if (forward_ == Vec3(0.0)) {
-        throw InputError(
-            "camera.eye " + format_vec(spec.eye),
-            "the eye must differ from the target " + format_vec(spec.target) + ", both finite");
+        throw InputError("camera.eye " + format_point(spec.eye, 6),
+                         "the eye must differ from the target " + format_point(spec.target, 6) +
+                             ", both finite");
     }
     const Vec3 up = scaled_normalize(spec.up);
     const Vec3 side = glm::cross(forward_, up);
     if (!(glm::length(side) > 1e-9)) {  // also a zero or non-finite up
-        throw InputError("camera.up " + format_vec(spec.up),
+        throw InputError("camera.up " + format_point(spec.up, 6),
                          "the up vector must be non-zero and not parallel to the viewing "
                          "direction");
     }

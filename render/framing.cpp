@@ -9,12 +9,6 @@ namespace locus::render {
 
 namespace {
 
-std::string format_point(const Vec3& p) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x, p.y, p.z);
-    return text;
-}
-
 // Whether the box [low, high] lies inside the region (for a sphere: all eight corners do).
 bool contains(const ClipRegion& region, const Vec3& low, const Vec3& high) {
     if (const auto* box = std::get_if<ClipBox>(&region)) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -49,11 +48,8 @@ CameraSpec default_camera(const Scene& scene) {
     const bool eye_finite =
         std::isfinite(camera.eye.x) && std::isfinite(camera.eye.y) && std::isfinite(camera.eye.z);
     if (!eye_finite || camera.eye == camera.target) {  // a NaN or infinite distance included
-        char extent[160];
-        std::snprintf(extent, sizeof extent, "(%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)", low.x,
-                      low.y, low.z, high.x, high.y, high.z);
-        const bool large = !(radius < 1.0);  // NaN: an extent that overflowed
-        throw InputError("the scene's extent " + std::string(extent),
+        const bool large = !(radius < 1.0);            // NaN: an extent that overflowed
+        throw InputError("the scene's extent " + format_point(low) + " to " + format_point(high),
                          std::string("too ") + (large ? "large" : "small") +
                              " to place the default camera in double precision (give a camera, "
                              "or " +

@@ -183,8 +183,9 @@ class Srgb8Table {
         }
     }
 
-    // c in [0, 1].
+    // Any c: clamped to [0, 1] first, NaN to 0.
     std::uint8_t operator()(double c) const {
+        c = c > 0.0 ? std::min(c, 1.0) : 0.0;
         const int bucket = std::min(static_cast<int>(c * kBuckets), kBuckets - 1);
         std::uint8_t code = bucket_start_[static_cast<std::size_t>(bucket)];
         if (c >= thresholds_[code]) {
@@ -236,14 +237,13 @@ const Srgb8Table& srgb8_table() {
 }  // namespace
 
 std::uint8_t to_srgb8(double linear) {
-    return srgb8_table()(linear > 0.0 ? std::min(linear, 1.0) : 0.0);  // NaN → 0
+    return srgb8_table()(linear);
 }
 
 void to_srgb8(const float* linear, std::uint8_t* codes, std::size_t n) {
     const Srgb8Table& table = srgb8_table();
     for (std::size_t i = 0; i < n; ++i) {
-        const double c = linear[i];
-        codes[i] = table(c > 0.0 ? std::min(c, 1.0) : 0.0);
+        codes[i] = table(linear[i]);
     }
 }
 

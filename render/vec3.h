@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -39,6 +41,13 @@ inline Vec3 scaled_normalize(const Vec3& v) {
         return Vec3(0.0);
     }
     return glm::normalize(v / largest);
+}
+
+// "(x, y, z)" with `digits` significant digits (%g: 1e-300 prints as itself, not 0.000000).
+inline std::string format_point(const Vec3& p, int digits = 4) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.*g, %.*g, %.*g)", digits, p.x, digits, p.y, digits, p.z);
+    return text;
 }
 
 struct Ray {
