@@ -176,10 +176,12 @@ class F4Engine {
                                         const Pivots& pivots, std::size_t rows) const;
     // A step's S-halves reduced in order, each by the pivots and by the rows before it that
     // did not reduce to zero (which join the pivots as `fresh`, monic; `useful` their indices
-    // in `rows`). With several threads, every row is first reduced by the reducers alone, side
-    // by side — most of the work: three rows in four reduce to zero —, and then in order by
-    // the new rows: the same rows result, a row's reduction by a set of pivots with distinct
-    // leading columns being unique.
+    // in `rows`). The reducers are first split by column (f4_linear_algebra.cpp): a row is
+    // reduced by them over the columns that lead a reducer, its remainder gathered in the
+    // others, and that remainder is then reduced by the new rows. With several threads the
+    // first part runs side by side — most of the work: three rows in four reduce to zero —,
+    // the second in order: the same rows result, a row's reduction by a set of pivots with
+    // distinct leading columns being unique.
     void reduce_rows(const std::vector<RowSpec>& rows, const std::vector<std::uint32_t>& column_of,
                      Pivots& pivots, std::size_t total_rows, std::vector<SparseRow>& fresh,
                      std::vector<std::size_t>& useful);
@@ -221,6 +223,7 @@ class F4Engine {
     std::vector<Element> basis_;
     std::vector<Pair> pairs_;
     std::vector<std::uint64_t> scratch_ = std::vector<std::uint64_t>(words_);
+    std::vector<std::uint32_t> split_storage_;  // the reducers of a step, split (reduce_rows)
     bool batch_ = true;
     bool by_lcm_only_ = false;
 };
