@@ -270,7 +270,7 @@ class SplitReducers {
 
     // `pivots` holds the step's reducers (and nothing else yet). `storage` holds the split
     // rows; kept from step to step, its pages are touched once per run rather than per step.
-    SplitReducers(const Pivots& pivots, std::vector<std::uint32_t>& storage, int threads)
+    SplitReducers(const Pivots& pivots, LargePageBuffer<std::uint32_t>& storage, int threads)
         : data_(storage) {
         const std::size_t width = pivots.of_column.size();
         index_of_column_.resize(width);
@@ -335,9 +335,7 @@ class SplitReducers {
             tails_[i].offset = offset;
             offset += 2 * std::size_t{tails_[i].leading_count} + tails_[i].free.words();
         }
-        if (data_.size() < offset) {
-            data_.resize(offset);
-        }
+        data_.make_room(offset);
         for_each(count, threads, fill);
         tails_.pop_back();
     }
@@ -408,7 +406,7 @@ class SplitReducers {
     std::vector<std::uint32_t> index_of_column_;  // leading index, or kFree | free index
     std::vector<std::uint32_t> free_columns_;     // by free index
     std::vector<Tail> tails_;                     // by leading index
-    std::vector<std::uint32_t>& data_;
+    LargePageBuffer<std::uint32_t>& data_;
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 
 #include "algebra/deadline.h"
 #include "algebra/error.h"
+#include "algebra/modular/detail/large_page_buffer.h"
 #include "algebra/modular/f4.h"
 #include "algebra/monomial_table.h"
 
@@ -223,7 +224,7 @@ class F4Engine {
     std::vector<Element> basis_;
     std::vector<Pair> pairs_;
     std::vector<std::uint64_t> scratch_ = std::vector<std::uint64_t>(words_);
-    std::vector<std::uint32_t> split_storage_;  // the reducers of a step, split (reduce_rows)
+    LargePageBuffer<std::uint32_t> split_storage_;  // a step's reducers, split (reduce_rows)
     bool batch_ = true;
     bool by_lcm_only_ = false;
 };
