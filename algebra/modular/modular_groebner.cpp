@@ -474,6 +474,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         const auto f4_start = Clock::now();
         modular::F4Stats f4_stats;
         auto run_f4 = [&](const std::vector<ModularPolynomial>& polys, const MonomialLayout& l) {
+            bool record = tracing && !trace;
             if (item.replay_tried) {
                 if (item.replayed && !confirming) {
                     ++s.replayed;
@@ -481,10 +482,22 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 }
                 if (!item.replayed) {
                     ++s.replays_refused;
+                    // Refused beyond the primes that may be set aside: most likely the recording
+                    // itself left the common path — a coefficient of one of its many
+                    // new rows vanishing modulo its prime, about 7 % of cyclic-8's primes
+                    // below 2²⁴ (1.15 million coefficients), after which every replay was
+                    // refused and F4 ran afresh on every prime (86 s against 13). Record
+                    // this run instead and replay it; the replays already made from the old
+                    // recording are dropped with their primes.
+                    record = tracing;
                 }
             }
-            if (tracing && !trace) {
+            if (record) {
                 trace.emplace();
+                ++s.traces_recorded;
+                if (s.traces_recorded > 1) {
+                    ready.clear();
+                }
                 return modular::f4(polys, l, field, f4_options, &f4_stats, &*trace);
             }
             return modular::f4(polys, l, field, f4_options, &f4_stats);

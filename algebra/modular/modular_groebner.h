@@ -56,9 +56,10 @@ struct ModularStats {
     double certify_seconds = 0.0;
     bool certified = false;
     bool fglm = false;                          // computed under grevlex and converted by FGLM
-    std::size_t replayed = 0;                   // primes whose F4 was a replay of the first one's
+    std::size_t replayed = 0;                   // primes whose F4 was a replay of a recording
     std::size_t replays_refused = 0;            // replays that did not go as recorded
     std::size_t replays_refused_set_aside = 0;  // of them, primes set aside (else F4 ran afresh)
+    std::size_t traces_recorded = 0;            // F4 runs recorded for replay (1 unless refused)
     double replay_seconds = 0.0;                // the successful replays, part of modular_seconds
     CertificationWork certification;            // over every attempt
     // Under `auto` (groebner_automatic): why its signature probe handed over, and how long it
