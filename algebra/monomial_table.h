@@ -4,6 +4,7 @@
 // meet with it, so that a term becomes an index into an array.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +24,13 @@ class MonomialTable {
     }
 
     std::size_t size() const { return count_; }
+
+    // Forgets every monomial (the indices start again from 0), keeping the memory.
+    void clear() {
+        count_ = 0;
+        data_.clear();
+        std::fill(slots_.begin(), slots_.end(), Slot{kEmpty, 0});
+    }
     const std::uint64_t* at(std::uint32_t index) const { return data_.data() + index * words_; }
 
     // The hash of m: linear in its words (Σ m[w]·R_w mod 2⁶⁴), so that the hash of a product,

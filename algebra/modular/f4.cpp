@@ -56,6 +56,11 @@ void F4Engine::step() {
     check_deadline();
     const auto symbolic_start = Clock::now();
     ++stats_.steps;
+    // The monomials of this step alone: the table stays the size of one matrix's columns (a
+    // few hundred kilobytes, in the caches) instead of every monomial of the run, and so do
+    // the arrays indexed by it below. Nothing keeps a table index past its step: elements
+    // keep their monomials and the hashes of their terms.
+    table_.clear();
     std::uint32_t degree = 0;
     const std::vector<Pair> chosen = select_pairs(degree);
     // Both halves of every S-polynomial; a half that repeats is kept once, and the first
@@ -171,6 +176,7 @@ std::vector<ModularPolynomial> F4Engine::reduced_basis() {
             basis_[g].redundant = false;
         }
         std::vector<RowSpec> reducers, none;
+        table_.clear();
         std::vector<std::int64_t> pivot_of_monomial(table_.size(), -1);
         std::vector<char> seen(table_.size(), 0);
         std::vector<std::uint64_t> one(words_, 0);
