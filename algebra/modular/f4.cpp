@@ -98,31 +98,23 @@ void F4Engine::step() {
     const auto algebra_start = Clock::now();
     const std::size_t width = columns.size();
     const std::size_t total_rows = reducers.size() + rows.size();
-    std::vector<std::vector<std::uint32_t>> reducer_columns(reducers.size());
-    Pivots pivots(width);
-    pivots.rows.reserve(total_rows);
-    std::size_t entries = 0;
-    for (std::size_t r = 0; r < reducers.size(); ++r) {
-        reducer_columns[r] = columns_of(reducers[r], column_of);
-        pivots.add(row_view(reducers[r], reducer_columns[r]));
-        entries += reducer_columns[r].size();
-    }
     if (total_rows > stats_.largest_rows) {
         stats_.largest_rows = total_rows;
         stats_.largest_columns = width;
-        for (const RowSpec& row : rows) {
-            entries += row.monomials.size();
+        std::size_t entries = 0;
+        for (const std::vector<RowSpec>* part : {&reducers, &rows}) {
+            for (const RowSpec& row : *part) {
+                entries += row.monomials.size();
+            }
         }
         stats_.largest_density =
             static_cast<double>(entries) / (static_cast<double>(total_rows) * width);
     }
-    // Reduce the S-halves by the reducers, then echelonize what is left among itself. A
-    // reduced row's storage stays where it is when `fresh` grows (a moved vector keeps its
-    // buffer), so its pivot view stays valid.
+    // Reduce the S-halves by the reducers, then echelonize what is left among itself.
     std::vector<SparseRow> fresh;
     fresh.reserve(rows.size());
     std::vector<std::size_t> useful;  // rows that gave new elements, in order
-    reduce_rows(rows, column_of, pivots, total_rows, fresh, useful);
+    reduce_rows(reducers, rows, column_of, width, fresh, useful);
     stats_.linear_algebra_seconds += seconds_since(algebra_start);
     std::vector<std::uint64_t> column_monomials;
     column_monomials.reserve(columns.size() * words_);

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <span>
 
 namespace locus::algebra::modular::detail {
 
@@ -268,34 +269,48 @@ class SplitReducers {
   public:
     static constexpr std::uint32_t kFree = std::uint32_t{1} << 31;
 
-    // `pivots` holds the step's reducers (and nothing else yet). `storage` holds the split
-    // rows; kept from step to step, its pages are touched once per run rather than per step.
-    SplitReducers(const Pivots& pivots, LargePageBuffer<std::uint32_t>& storage, int threads)
+    // The reducers are multiples of `basis` elements, their monomials numbered by the step's
+    // table; `column_of` numbers those monomials by column (descending monomials). `storage`
+    // holds the split rows; kept from step to step, its pages are touched once per run rather
+    // than once a step.
+    SplitReducers(std::span<const RowSpec> reducers, const std::vector<Element>& basis,
+                  const std::vector<std::uint32_t>& column_of, std::size_t width,
+                  LargePageBuffer<std::uint32_t>& storage, int threads)
         : data_(storage) {
-        const std::size_t width = pivots.of_column.size();
-        index_of_column_.resize(width);
+        std::vector<std::int64_t> reducer_of_column(width, -1);
+        for (std::size_t r = 0; r < reducers.size(); ++r) {
+            reducer_of_column[column_of[reducers[r].monomials.front()]] =
+                static_cast<std::int64_t>(r);
+        }
+        std::vector<std::uint32_t> index_of_column(width);
         std::vector<std::size_t> reducer_of_leading;
         for (std::size_t c = 0; c < width; ++c) {
-            if (pivots.of_column[c] >= 0) {
-                index_of_column_[c] = static_cast<std::uint32_t>(reducer_of_leading.size());
-                reducer_of_leading.push_back(static_cast<std::size_t>(pivots.of_column[c]));
+            if (reducer_of_column[c] >= 0) {
+                index_of_column[c] = static_cast<std::uint32_t>(reducer_of_leading.size());
+                reducer_of_leading.push_back(static_cast<std::size_t>(reducer_of_column[c]));
             } else {
-                index_of_column_[c] = kFree | static_cast<std::uint32_t>(free_columns_.size());
+                index_of_column[c] = kFree | static_cast<std::uint32_t>(free_columns_.size());
                 free_columns_.push_back(static_cast<std::uint32_t>(c));
             }
+        }
+        // By monomial, so that a row's term is placed by one lookup (the table numbers only
+        // this step's monomials, all of them columns).
+        index_of_monomial_.resize(column_of.size());
+        for (std::size_t m = 0; m < column_of.size(); ++m) {
+            index_of_monomial_[m] = index_of_column[column_of[m]];
         }
         // Two passes over the reducers, by leading index, into one block of memory laid out
         // in the order a row's reduction reads it: the sizes, then the entries. The leading
         // entry itself (k = 0) is the pivot and is not stored.
         tails_.resize(reducer_of_leading.size() + 1);
         auto measure = [&](std::size_t i) {
-            const PivotRow& row = pivots.rows[reducer_of_leading[i]];
+            const RowSpec& row = reducers[reducer_of_leading[i]];
             std::uint32_t leading = 0;
             std::uint32_t free = 0;
             std::uint32_t first = 0;
             std::uint32_t last = 0;
-            for (std::size_t k = 1; k < row.size; ++k) {
-                const std::uint32_t index = index_of_column_[row.columns[k]];
+            for (std::size_t k = 1; k < row.monomials.size(); ++k) {
+                const std::uint32_t index = index_of_monomial_[row.monomials[k]];
                 if ((index & kFree) == 0) {
                     ++leading;
                 } else {
@@ -308,7 +323,8 @@ class SplitReducers {
             tails_[i].free = FreeLayout::of(first, last, free);
         };
         auto fill = [&](std::size_t i) {
-            const PivotRow& row = pivots.rows[reducer_of_leading[i]];
+            const RowSpec& row = reducers[reducer_of_leading[i]];
+            const std::uint32_t* coefficients = basis[row.element].poly.coefficients.data();
             const Tail& tail = tails_[i];
             std::uint32_t* pairs = data_.data() + tail.offset;
             std::uint32_t* free = pairs + 2 * std::size_t{tail.leading_count};
@@ -317,14 +333,14 @@ class SplitReducers {
             }
             std::size_t leading_k = 0;
             std::size_t free_k = 0;
-            for (std::size_t k = 1; k < row.size; ++k) {
-                const std::uint32_t index = index_of_column_[row.columns[k]];
+            for (std::size_t k = 1; k < row.monomials.size(); ++k) {
+                const std::uint32_t index = index_of_monomial_[row.monomials[k]];
                 if ((index & kFree) == 0) {
                     pairs[2 * leading_k] = index;
-                    pairs[2 * leading_k + 1] = row.coefficients[k];
+                    pairs[2 * leading_k + 1] = coefficients[k];
                     ++leading_k;
                 } else {
-                    tail.free.encode(free, index & ~kFree, row.coefficients[k], free_k++);
+                    tail.free.encode(free, index & ~kFree, coefficients[k], free_k++);
                 }
             }
         };
@@ -342,27 +358,26 @@ class SplitReducers {
 
     std::size_t leading_count() const { return tails_.size(); }
     std::size_t free_count() const { return free_columns_.size(); }
-    std::uint32_t free_index(std::uint32_t column) const {
-        return index_of_column_[column] & ~kFree;
-    }
     std::uint32_t column_of_free(std::uint32_t index) const { return free_columns_[index]; }
 
-    // Loads `row` into the zero accumulators and reduces it by the reducers: leaves the
-    // leading accumulator zero and the free one holding the row's residue there (unreduced).
+    // Loads `row` (its coefficients `coefficients`) into the zero accumulators and reduces it
+    // by the reducers: leaves the leading accumulator zero and the free one holding the row's
+    // residue there (unreduced).
     template <bool Lazy>
-    void reduce(PivotRow row, Accumulators& acc, std::uint64_t p) const {
+    void reduce(const RowSpec& row, const std::uint32_t* coefficients, Accumulators& acc,
+                std::uint64_t p) const {
         const std::uint64_t limit = 2 * p * p;
         std::uint64_t* leading = acc.leading.data();
         std::uint64_t* free = acc.free.data();
         const std::size_t count = tails_.size();
         std::size_t from = count;
-        for (std::size_t k = 0; k < row.size; ++k) {
-            const std::uint32_t index = index_of_column_[row.columns[k]];
+        for (std::size_t k = 0; k < row.monomials.size(); ++k) {
+            const std::uint32_t index = index_of_monomial_[row.monomials[k]];
             if ((index & kFree) == 0) {
-                leading[index] = row.coefficients[k];
+                leading[index] = coefficients[k];
                 from = std::min<std::size_t>(from, index);
             } else {
-                free[index & ~kFree] = row.coefficients[k];
+                free[index & ~kFree] = coefficients[k];
             }
         }
         const std::uint32_t* data = data_.data();
@@ -403,9 +418,9 @@ class SplitReducers {
         }
     }
 
-    std::vector<std::uint32_t> index_of_column_;  // leading index, or kFree | free index
-    std::vector<std::uint32_t> free_columns_;     // by free index
-    std::vector<Tail> tails_;                     // by leading index
+    std::vector<std::uint32_t> index_of_monomial_;  // leading index, or kFree | free index
+    std::vector<std::uint32_t> free_columns_;       // by free index
+    std::vector<Tail> tails_;                       // by leading index
     LargePageBuffer<std::uint32_t>& data_;
 };
 
@@ -442,25 +457,24 @@ std::optional<SparseRow> F4Engine::reduce_row(PivotRow row, std::vector<std::uin
     return reduced;
 }
 
-void F4Engine::reduce_rows(const std::vector<RowSpec>& rows,
-                           const std::vector<std::uint32_t>& column_of, Pivots& pivots,
-                           std::size_t total_rows, std::vector<SparseRow>& fresh,
-                           std::vector<std::size_t>& useful) {
+void F4Engine::reduce_rows(const std::vector<RowSpec>& reducers, const std::vector<RowSpec>& rows,
+                           const std::vector<std::uint32_t>& column_of, std::size_t width,
+                           std::vector<SparseRow>& fresh, std::vector<std::size_t>& useful) {
     const int threads = std::max(1, options_.threads);
     // Below this many rows a step is not worth the threads' start.
     constexpr std::size_t kRowsForThreads = 32;
     const bool side_by_side = threads > 1 && rows.size() >= kRowsForThreads;
-    const SplitReducers split(pivots, split_storage_, side_by_side ? threads : 1);
+    const SplitReducers split(reducers, basis_, column_of, width, split_storage_,
+                              side_by_side ? threads : 1);
     const std::uint64_t p = field_.p;
-    const bool lazy = lazy_reduction(p, total_rows);
+    const bool lazy = lazy_reduction(p, reducers.size() + rows.size());
     FreeRows by_fresh(split.free_count());
-    auto reduce_by_reducers = [&](const RowSpec& spec, Accumulators& acc) {
-        const std::vector<std::uint32_t> row_columns = columns_of(spec, column_of);
-        const PivotRow row = row_view(spec, row_columns);
+    auto reduce_by_reducers = [&](const RowSpec& row, Accumulators& acc) {
+        const std::uint32_t* coefficients = basis_[row.element].poly.coefficients.data();
         if (lazy) {
-            split.reduce<true>(row, acc, p);
+            split.reduce<true>(row, coefficients, acc, p);
         } else {
-            split.reduce<false>(row, acc, p);
+            split.reduce<false>(row, coefficients, acc, p);
         }
     };
     // With threads, by the reducers alone first, side by side (each thread has its own
@@ -509,7 +523,6 @@ void F4Engine::reduce_rows(const std::vector<RowSpec>& rows,
         by_fresh.add(residue.indices, row.coefficients);
         useful.push_back(r);
         fresh.push_back(std::move(row));
-        pivots.add(view_of(fresh.back()));
     }
 }
 

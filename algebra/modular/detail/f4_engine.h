@@ -175,17 +175,17 @@ class F4Engine {
     // non-zero result is made monic. Nothing when it reduces to 0.
     std::optional<SparseRow> reduce_row(PivotRow row, std::vector<std::uint64_t>& acc,
                                         const Pivots& pivots, std::size_t rows) const;
-    // A step's S-halves reduced in order, each by the pivots and by the rows before it that
-    // did not reduce to zero (which join the pivots as `fresh`, monic; `useful` their indices
+    // A step's S-halves reduced in order, each by the reducers (one per pivot column) and by
+    // the rows before it that did not reduce to zero (`fresh`, monic; `useful` their indices
     // in `rows`). The reducers are first split by column (f4_linear_algebra.cpp): a row is
     // reduced by them over the columns that lead a reducer, its remainder gathered in the
     // others, and that remainder is then reduced by the new rows. With several threads the
     // first part runs side by side — most of the work: three rows in four reduce to zero —,
     // the second in order: the same rows result, a row's reduction by a set of pivots with
     // distinct leading columns being unique.
-    void reduce_rows(const std::vector<RowSpec>& rows, const std::vector<std::uint32_t>& column_of,
-                     Pivots& pivots, std::size_t total_rows, std::vector<SparseRow>& fresh,
-                     std::vector<std::size_t>& useful);
+    void reduce_rows(const std::vector<RowSpec>& reducers, const std::vector<RowSpec>& rows,
+                     const std::vector<std::uint32_t>& column_of, std::size_t width,
+                     std::vector<SparseRow>& fresh, std::vector<std::size_t>& useful);
     void make_monic(SparseRow& row) const;
     // The reduced rows as polynomials, smallest leading monomial first (the order in which
     // they join the basis, which a replay repeats).
