@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <deque>
@@ -110,6 +111,7 @@ inline void update(std::uint64_t& target, std::uint64_t product, std::uint64_t l
 
 // (index, coefficient) pairs, interleaved so that a row's update reads one stream, each
 // pair in one 64-bit load (index in the low half): two loads and a store an update.
+static_assert(std::endian::native == std::endian::little, "a pair is read as one 64-bit word");
 template <bool Lazy>
 inline void add_pairs(std::uint64_t* acc, const std::uint32_t* pairs, std::size_t n,
                       std::uint64_t factor, std::uint64_t limit) {
