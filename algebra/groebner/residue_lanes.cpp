@@ -1,7 +1,6 @@
 #include "algebra/groebner/residue_lanes.h"
 
 #include <algorithm>
-#include <atomic>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,6 +9,7 @@
 
 #include <flint/ulong_extras.h>
 
+#include "algebra/detail/kernel_choice.h"
 #include "algebra/groebner/log_bound.h"
 
 // GCC 12 sees the _mm512_undefined_epi32() inside AVX-512 intrinsics as uninitialized reads
@@ -432,24 +432,13 @@ constexpr Kernels kAvx2{"avx2", multiply_avx2, add_scaled_rows_avx2, combine_dig
 constexpr Kernels kAvx512{"avx512", multiply_avx512, add_scaled_rows_avx512, combine_digits_avx512,
                           add_scaled_rows_bounded_avx512};
 
-const Kernels* best_supported() {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) {
-        return &kAvx512;
-    }
-    if (__builtin_cpu_supports("avx2")) {
-        return &kAvx2;
-    }
-    return &kPortable;
-}
-
-std::atomic<const Kernels*>& active() {
-    static std::atomic<const Kernels*> kernels{best_supported()};
+KernelChoice<Kernels>& choice() {
+    static KernelChoice<Kernels> kernels(kPortable, kAvx2, kAvx512);
     return kernels;
 }
 
 const Kernels& kernels() {
-    return *active().load(std::memory_order_relaxed);
+    return choice().get();
 }
 
 }  // namespace
@@ -568,27 +557,11 @@ const char* kernel_name() {
 }
 
 std::vector<std::string> supported_kernels() {
-    std::vector<std::string> names{"portable"};
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx2")) {
-        names.emplace_back("avx2");
-    }
-    if (__builtin_cpu_supports("avx512f")) {
-        names.emplace_back("avx512");
-    }
-    return names;
+    return choice().supported();
 }
 
 void select_kernels(const std::string& name) {
-    const std::vector<std::string> supported = supported_kernels();
-    for (const Kernels* k : {&kPortable, &kAvx2, &kAvx512}) {
-        if (name == k->name &&
-            std::find(supported.begin(), supported.end(), name) != supported.end()) {
-            active().store(k);
-            return;
-        }
-    }
-    throw std::invalid_argument("lane kernels not supported here: " + name);
+    choice().select(name);
 }
 
 }  // namespace lanes

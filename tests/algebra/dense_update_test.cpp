@@ -1,11 +1,13 @@
-// The dense update of F4's row reduction (algebra/modular/detail/dense_update.h): the best
-// kernels of the machine (AVX-512 or AVX2) and the portable ones against the sum written out
+// The dense update of F4's row reduction (algebra/modular/detail/dense_update.h): every build
+// of the kernels the machine runs (portable, AVX2, AVX-512) against the sum written out
 // entry by entry (below 3p² < 2⁶⁴, so without wrapping), on random runs of every length up to 70
 // and at every offset, lazy and bounded, with entries next to the bound.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "algebra/modular/detail/dense_update.h"
@@ -58,17 +60,19 @@ void expect_kernels_agree_with_the_sum() {
     }
 }
 
-TEST(DenseUpdate, BestKernelsAgreeWithTheSum) {
-    SCOPED_TRACE(dense_update_kernels());
-    expect_kernels_agree_with_the_sum();
-}
-
-TEST(DenseUpdate, PortableKernelsAgreeWithTheSum) {
-    use_portable_dense_update(true);
-    EXPECT_STREQ(dense_update_kernels(), "portable");
-    expect_kernels_agree_with_the_sum();
-    use_portable_dense_update(false);
-    EXPECT_STRNE(dense_update_kernels(), "");
+TEST(DenseUpdate, EveryKernelTheProcessorRunsAgreesWithTheSum) {
+    const std::string best = dense_update_kernels();
+    const std::vector<std::string> supported = supported_dense_update_kernels();
+    ASSERT_EQ(supported.front(), "portable");
+    EXPECT_EQ(supported.back(), best);  // the best it runs is the one in use
+    for (const std::string& name : supported) {
+        SCOPED_TRACE(name);
+        select_dense_update_kernels(name);
+        EXPECT_EQ(dense_update_kernels(), name);
+        expect_kernels_agree_with_the_sum();
+    }
+    select_dense_update_kernels(best);
+    EXPECT_THROW(select_dense_update_kernels("sse9"), std::invalid_argument);
 }
 
 }  // namespace

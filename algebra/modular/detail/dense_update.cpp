@@ -2,7 +2,7 @@
 
 #include <immintrin.h>
 
-#include <atomic>
+#include "algebra/detail/kernel_choice.h"
 
 // GCC 12 sees the _mm512_undefined_epi32() inside AVX-512 intrinsics as uninitialized reads
 // (GCC bug 105593); the intrinsics are correct.
@@ -124,24 +124,13 @@ constexpr Kernels kPortable{"portable", lazy_portable, bounded_portable};
 constexpr Kernels kAvx2{"avx2", lazy_avx2, bounded_avx2};
 constexpr Kernels kAvx512{"avx512", lazy_avx512, bounded_avx512};
 
-const Kernels* best_supported() {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) {
-        return &kAvx512;
-    }
-    if (__builtin_cpu_supports("avx2")) {
-        return &kAvx2;
-    }
-    return &kPortable;
-}
-
-std::atomic<const Kernels*>& active() {
-    static std::atomic<const Kernels*> kernels{best_supported()};
+algebra::detail::KernelChoice<Kernels>& choice() {
+    static algebra::detail::KernelChoice<Kernels> kernels(kPortable, kAvx2, kAvx512);
     return kernels;
 }
 
 const Kernels& kernels() {
-    return *active().load(std::memory_order_relaxed);
+    return choice().get();
 }
 
 }  // namespace
@@ -160,8 +149,12 @@ const char* dense_update_kernels() {
     return kernels().name;
 }
 
-void use_portable_dense_update(bool portable) {
-    active().store(portable ? &kPortable : best_supported(), std::memory_order_relaxed);
+std::vector<std::string> supported_dense_update_kernels() {
+    return choice().supported();
+}
+
+void select_dense_update_kernels(const std::string& name) {
+    choice().select(name);
 }
 
 }  // namespace locus::algebra::modular::detail

@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace locus::algebra::modular::detail {
 
@@ -19,9 +21,10 @@ void add_dense_lazy(std::uint64_t* acc, const std::uint32_t* coefficients, std::
 void add_dense_bounded(std::uint64_t* acc, const std::uint32_t* coefficients, std::size_t n,
                        std::uint32_t factor, std::uint64_t limit);
 
-// The kernels in use ("avx512", "avx2" or "portable"), and, for the tests, a way to run the
-// portable ones on any machine; `use_portable_dense_update(false)` restores the best.
+// The kernels in use ("avx512", "avx2" or "portable"), those this processor runs, and, for
+// the tests, a way to pick one (throws std::invalid_argument if the processor does not run it).
 const char* dense_update_kernels();
-void use_portable_dense_update(bool portable);
+std::vector<std::string> supported_dense_update_kernels();
+void select_dense_update_kernels(const std::string& name);
 
 }  // namespace locus::algebra::modular::detail
