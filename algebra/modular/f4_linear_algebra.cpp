@@ -19,39 +19,47 @@ namespace locus::algebra::modular::detail {
 
 namespace {
 
-// acc −= value · row past its leading entry, as acc += (p − value) · entry. Unrolled by four:
-// the columns of a row are distinct, so the four updates are independent.
-//
-// Lazy: every sum stays below 2⁶⁴ unreduced (small primes, bounded rows; see
-// lazy_reduction), so there is nothing to test per entry. Otherwise entries are kept below
-// 2p² by one conditional subtraction of 2p² per update (p < 2³¹: 2p² + p² < 2⁶⁴).
+// One update of an accumulator entry by a product below p². Lazy: every sum stays below 2⁶⁴
+// unreduced (small primes, bounded rows; see lazy_reduction), so there is nothing to test per
+// entry. Otherwise entries are kept below 2p² by one conditional subtraction of 2p² per update
+// (p < 2³¹: 2p² + p² < 2⁶⁴).
+template <bool Lazy>
+inline void update(std::uint64_t& target, std::uint64_t product, std::uint64_t limit) {
+    if constexpr (Lazy) {
+        target += product;
+    } else {
+        const std::uint64_t sum = target + product;
+        target = sum >= limit ? sum - limit : sum;
+    }
+}
+
+// body(k) for k in [begin, end), unrolled by four: the entries of a row are distinct, so the
+// four updates are independent.
+template <typename Body>
+inline void unrolled_by_four(std::size_t begin, std::size_t end, const Body& body) {
+    std::size_t k = begin;
+    for (; k + 4 <= end; k += 4) {
+        body(k);
+        body(k + 1);
+        body(k + 2);
+        body(k + 3);
+    }
+    for (; k < end; ++k) {
+        body(k);
+    }
+}
+
+// acc −= value · row past its leading entry, as acc += (p − value) · entry.
 template <bool Lazy>
 void add_multiple(std::uint64_t* acc, const PivotRow& row, std::uint64_t factor,
                   std::uint64_t limit) {
     const std::uint32_t* columns = row.columns;
     const std::uint32_t* coefficients = row.coefficients;
-    auto update = [&](std::size_t k) {
-        std::uint64_t& target = acc[columns[k]];
-        if constexpr (Lazy) {
-            target += factor * coefficients[k];
-        } else {
-            const std::uint64_t sum = target + factor * coefficients[k];
-            target = sum >= limit ? sum - limit : sum;
-        }
-    };
-    // In locals: a store to acc could otherwise alias the row's size (both 64-bit) and reload
-    // it every iteration.
-    const std::size_t size = row.size;
-    std::size_t k = 1;
-    for (; k + 4 <= size; k += 4) {
-        update(k);
-        update(k + 1);
-        update(k + 2);
-        update(k + 3);
-    }
-    for (; k < size; ++k) {
-        update(k);
-    }
+    // The size in a local: a store to acc could otherwise alias it (both 64-bit) and reload it
+    // every iteration.
+    unrolled_by_four(1, row.size, [&](std::size_t k) {
+        update<Lazy>(acc[columns[k]], factor * coefficients[k], limit);
+    });
 }
 
 template <bool Lazy>
@@ -94,20 +102,11 @@ bool lazy_reduction(std::uint64_t p, std::size_t rows) {
 // that lead a reducer) and the free ones (the rest, where new leading monomials can appear).
 // Numbered apart, each kind has its own dense accumulator: a row's reduction by the reducers
 // walks the leading columns only, and its updates of the free columns — half or more of all
-// (cyclic-8 modulo 65 521: 1.5 of 2.7·10⁹) — go to an accumulator of a few kilobytes, as
+// (cyclic-8 modulo 65 521: 1.5 of 2.7·10⁹, counted by a build instrumented for it) — go to an
+// accumulator of a few kilobytes, as
 // runs of 8 lanes wherever a reducer is dense there. That is Faugère and Lachartre's split
 // of the Macaulay matrix into (A B; C D), without forming A⁻¹B: the multipliers come from
 // the leading columns alone, row by row as before, and each row's reduction is unchanged.
-
-template <bool Lazy>
-inline void update(std::uint64_t& target, std::uint64_t product, std::uint64_t limit) {
-    if constexpr (Lazy) {
-        target += product;
-    } else {
-        const std::uint64_t sum = target + product;
-        target = sum >= limit ? sum - limit : sum;
-    }
-}
 
 // (index, coefficient) pairs, interleaved so that a row's update reads one stream, each
 // pair in one 64-bit load (index in the low half): two loads and a store an update.
@@ -115,22 +114,11 @@ static_assert(std::endian::native == std::endian::little, "a pair is read as one
 template <bool Lazy>
 inline void add_pairs(std::uint64_t* acc, const std::uint32_t* pairs, std::size_t n,
                       std::uint64_t factor, std::uint64_t limit) {
-    auto pair_update = [&](std::size_t k) {
+    unrolled_by_four(0, n, [&](std::size_t k) {
         std::uint64_t pair;
         std::memcpy(&pair, pairs + 2 * k, sizeof pair);
         update<Lazy>(acc[static_cast<std::uint32_t>(pair)], factor * (pair >> 32), limit);
-    };
-    // Unrolled by four: the indices of a row are distinct, so the updates are independent.
-    std::size_t k = 0;
-    for (; k + 4 <= n; k += 4) {
-        pair_update(k);
-        pair_update(k + 1);
-        pair_update(k + 2);
-        pair_update(k + 3);
-    }
-    for (; k < n; ++k) {
-        pair_update(k);
-    }
+    });
 }
 
 // A row's entries in the free columns: packed from `first` (zeros included) where at least a
@@ -185,6 +173,27 @@ struct FreeResidue {
     std::vector<std::uint32_t> values;
 };
 
+// Reads the free accumulator in column order, leaving it zero: each non-zero value modulo p
+// goes to `eliminate(j, value)`, which subtracts a pivot there (true) or declines (false:
+// the value stays in the residue).
+template <typename Eliminate>
+FreeResidue drain(std::uint64_t* free, std::size_t count, std::uint64_t p,
+                  const Eliminate& eliminate) {
+    FreeResidue out;
+    for (std::size_t j = 0; j < count; ++j) {
+        if (free[j] == 0) {
+            continue;
+        }
+        const std::uint64_t value = free[j] % p;
+        free[j] = 0;
+        if (value != 0 && !eliminate(j, value)) {
+            out.indices.push_back(static_cast<std::uint32_t>(j));
+            out.values.push_back(static_cast<std::uint32_t>(value));
+        }
+    }
+    return out;
+}
+
 // A thread's two dense accumulators, zero between rows.
 struct Accumulators {
     Accumulators(std::size_t leading_count, std::size_t free_count)
@@ -193,18 +202,7 @@ struct Accumulators {
     std::vector<std::uint64_t> free;
 
     FreeResidue take_free(std::uint64_t p) {
-        FreeResidue out;
-        for (std::size_t j = 0; j < free.size(); ++j) {
-            if (free[j] != 0) {
-                const std::uint64_t value = free[j] % p;
-                free[j] = 0;
-                if (value != 0) {
-                    out.indices.push_back(static_cast<std::uint32_t>(j));
-                    out.values.push_back(static_cast<std::uint32_t>(value));
-                }
-            }
-        }
-        return out;
+        return drain(free.data(), free.size(), p, [](std::size_t, std::uint64_t) { return false; });
     }
     void load_free(const FreeResidue& residue) {
         for (std::size_t k = 0; k < residue.indices.size(); ++k) {
@@ -236,26 +234,15 @@ class FreeRows {
     template <bool Lazy>
     FreeResidue reduce(std::uint64_t* free, std::size_t count, std::uint64_t p) const {
         const std::uint64_t limit = 2 * p * p;
-        FreeResidue out;
-        for (std::size_t j = 0; j < count; ++j) {
-            if (free[j] == 0) {
-                continue;
-            }
-            const std::uint64_t value = free[j] % p;
-            free[j] = 0;
-            if (value == 0) {
-                continue;
-            }
+        return drain(free, count, p, [&](std::size_t j, std::uint64_t value) {
             const std::int64_t pivot = of_index_[j];
             if (pivot < 0) {
-                out.indices.push_back(static_cast<std::uint32_t>(j));
-                out.values.push_back(static_cast<std::uint32_t>(value));
-                continue;
+                return false;
             }
             const Row& row = rows_[static_cast<std::size_t>(pivot)];
             row.layout.add_to<Lazy>(free, row.data.data(), p - value, limit);
-        }
-        return out;
+            return true;
+        });
     }
 
   private:
@@ -304,7 +291,7 @@ class SplitReducers {
         // Two passes over the reducers, by leading index, into one block of memory laid out
         // in the order a row's reduction reads it: the sizes, then the entries. The leading
         // entry itself (k = 0) is the pivot and is not stored.
-        tails_.resize(reducer_of_leading.size() + 1);
+        tails_.resize(reducer_of_leading.size());
         auto measure = [&](std::size_t i) {
             const RowSpec& row = reducers[reducer_of_leading[i]];
             std::uint32_t leading = 0;
@@ -355,7 +342,6 @@ class SplitReducers {
         }
         data_.make_room(offset);
         for_each(count, threads, fill);
-        tails_.pop_back();
     }
 
     std::size_t leading_count() const { return tails_.size(); }
