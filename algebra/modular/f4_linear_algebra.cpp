@@ -62,30 +62,40 @@ void add_multiple(std::uint64_t* acc, const PivotRow& row, std::uint64_t factor,
     });
 }
 
+// Reads acc[from, end) in column order, leaving it zero: each entry non-zero modulo p goes to
+// visit(column, value), value in [1, p). Every reduction here is this scan, subtracting a
+// pivot or keeping the value at each column it visits.
+template <typename Visit>
+inline void for_each_residue(std::uint64_t* acc, std::size_t from, std::size_t end, std::uint64_t p,
+                             const Visit& visit) {
+    for (std::size_t c = from; c < end; ++c) {
+        if (acc[c] == 0) {
+            continue;
+        }
+        const std::uint64_t value = acc[c] % p;
+        acc[c] = 0;
+        if (value != 0) {
+            visit(c, value);
+        }
+    }
+}
+
 template <bool Lazy>
 SparseRow reduce_dense_with(std::vector<std::uint64_t>& acc, std::size_t from, const Pivots& pivots,
                             std::uint64_t p) {
     const std::uint64_t limit = 2 * p * p;
     std::uint64_t* entries = acc.data();
-    const std::size_t width = acc.size();
     SparseRow out;
-    for (std::size_t c = from; c < width; ++c) {
-        if (entries[c] == 0) {
-            continue;
-        }
-        const std::uint64_t value = entries[c] % p;
-        entries[c] = 0;
-        if (value == 0) {
-            continue;
-        }
+    for_each_residue(entries, from, acc.size(), p, [&](std::size_t c, std::uint64_t value) {
         const std::int64_t pivot = pivots.of_column[c];
         if (pivot < 0) {
             out.columns.push_back(static_cast<std::uint32_t>(c));
             out.coefficients.push_back(static_cast<std::uint32_t>(value));
-            continue;
+        } else {
+            add_multiple<Lazy>(entries, pivots.rows[static_cast<std::size_t>(pivot)], p - value,
+                               limit);
         }
-        add_multiple<Lazy>(entries, pivots.rows[static_cast<std::size_t>(pivot)], p - value, limit);
-    }
+    });
     return out;
 }
 
@@ -173,24 +183,18 @@ struct FreeResidue {
     std::vector<std::uint32_t> values;
 };
 
-// Reads the free accumulator in column order, leaving it zero: each non-zero value modulo p
-// goes to `eliminate(j, value)`, which subtracts a pivot there (true) or declines (false:
-// the value stays in the residue).
+// The free accumulator read by for_each_residue: `eliminate(j, value)` subtracts a pivot at
+// free index j (true) or declines (false: the value stays in the residue).
 template <typename Eliminate>
 FreeResidue drain(std::uint64_t* free, std::size_t count, std::uint64_t p,
                   const Eliminate& eliminate) {
     FreeResidue out;
-    for (std::size_t j = 0; j < count; ++j) {
-        if (free[j] == 0) {
-            continue;
-        }
-        const std::uint64_t value = free[j] % p;
-        free[j] = 0;
-        if (value != 0 && !eliminate(j, value)) {
+    for_each_residue(free, 0, count, p, [&](std::size_t j, std::uint64_t value) {
+        if (!eliminate(j, value)) {
             out.indices.push_back(static_cast<std::uint32_t>(j));
             out.values.push_back(static_cast<std::uint32_t>(value));
         }
-    }
+    });
     return out;
 }
 
@@ -369,22 +373,15 @@ class SplitReducers {
             }
         }
         const std::uint32_t* data = data_.data();
-        for (std::size_t i = from; i < count; ++i) {
-            if (leading[i] == 0) {
-                continue;
-            }
-            const std::uint64_t value = leading[i] % p;
-            leading[i] = 0;
-            if (value == 0) {
-                continue;
-            }
+        // Every leading column has its reducer.
+        for_each_residue(leading, from, count, p, [&](std::size_t i, std::uint64_t value) {
             const std::uint64_t factor = p - value;
             const Tail& tail = tails_[i];
             const std::uint32_t* pairs = data + tail.offset;
             add_pairs<Lazy>(leading, pairs, tail.leading_count, factor, limit);
             tail.free.add_to<Lazy>(free, pairs + 2 * std::size_t{tail.leading_count}, factor,
                                    limit);
-        }
+        });
     }
 
   private:
