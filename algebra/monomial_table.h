@@ -1,6 +1,6 @@
 // Packed monomials stored once each and numbered in the order they arrive, found by hashing
 // their words (open addressing, linear probing). F4's symbolic preprocessing (modular/f4.cpp)
-// and the certification's dense reducer (groebner/zero_reducer.h) number the monomials they
+// and the certification's dense reducer (groebner/detail/zero_reducer.h) number the monomials they
 // meet with it, so that a term becomes an index into an array.
 #pragma once
 

@@ -8,8 +8,8 @@
 #include <algorithm>
 
 #include "algebra/error.h"
-#include "algebra/groebner/pair_criteria.h"
-#include "algebra/groebner/reduction.h"
+#include "algebra/groebner/detail/pair_criteria.h"
+#include "algebra/groebner/detail/reduction.h"
 
 namespace locus::algebra {
 

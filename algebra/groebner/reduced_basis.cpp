@@ -11,7 +11,7 @@
 
 #include "algebra/assert.h"
 #include "algebra/groebner/buchberger.h"
-#include "algebra/groebner/reduction.h"
+#include "algebra/groebner/detail/reduction.h"
 
 namespace locus::algebra {
 namespace detail {

@@ -43,7 +43,7 @@
 #include <tbb/task_arena.h>
 
 #include "algebra/error.h"
-#include "algebra/groebner/reduction.h"
+#include "algebra/groebner/detail/reduction.h"
 
 namespace locus::algebra {
 namespace {

@@ -11,10 +11,10 @@
 
 #include "algebra/division.h"
 #include "algebra/error.h"
-#include "algebra/groebner/pair_criteria.h"
-#include "algebra/groebner/reduction.h"
-#include "algebra/groebner/residue_lanes.h"
-#include "algebra/groebner/zero_reducer.h"
+#include "algebra/groebner/detail/pair_criteria.h"
+#include "algebra/groebner/detail/reduction.h"
+#include "algebra/groebner/detail/residue_lanes.h"
+#include "algebra/groebner/detail/zero_reducer.h"
 #include "algebra/print.h"
 
 namespace locus::algebra {

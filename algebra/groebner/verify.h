@@ -20,7 +20,7 @@ namespace locus::algebra {
 // What certifying a basis cost (certify_groebner_basis; the modular algorithm reports the sum
 // over its attempts): reduction steps, the residue lanes it ended on (the most any thread
 // used), how often a reduction started again on more lanes, how often the pending values were
-// rebuilt in full (groebner/zero_reducer.h), and whether some reductions ran on GMP integers
+// rebuilt in full (groebner/detail/zero_reducer.h), and whether some reductions ran on GMP integers
 // (too large for lanes). The one record of this work: BasisCheck, ModularStats and the zero
 // reducers all use it.
 struct CertificationWork {
@@ -51,7 +51,7 @@ bool is_groebner_basis(std::span<const Polynomial> basis, std::span<const Polyno
 // are those left by the Gebauer–Möller criteria (product and chain; Gebauer & Möller 1988
 // show that these suffice) and reductions are fraction-free over Z, only far enough to decide
 // zero, on residues modulo word primes with rigorous size bounds or on GMP integers
-// (groebner/zero_reducer.h). It certifies the results of the multi-modular algorithm, whose
+// (groebner/detail/zero_reducer.h). It certifies the results of the multi-modular algorithm, whose
 // F4 code shares nothing with this reducer. On cyclic-6 it takes 3 ms where the rational
 // check takes 0.8 s.
 // Throws Timeout once `deadline` passes (checked every few reduction steps). The S-pairs are

@@ -18,7 +18,7 @@
 #include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/groebner/verify.h"
-#include "algebra/modular/fglm.h"
+#include "algebra/modular/detail/fglm.h"
 #include "algebra/modular/rational_lift.h"
 
 namespace locus::algebra {

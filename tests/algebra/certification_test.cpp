@@ -13,12 +13,12 @@
 
 #include <flint/ulong_extras.h>
 
-#include "algebra/groebner/exact_zero_reducer.h"
-#include "algebra/groebner/log_bound.h"
-#include "algebra/groebner/pair_criteria.h"
-#include "algebra/groebner/residue_lanes.h"
-#include "algebra/groebner/residue_system.h"
-#include "algebra/groebner/residue_zero_reducer.h"
+#include "algebra/groebner/detail/exact_zero_reducer.h"
+#include "algebra/groebner/detail/log_bound.h"
+#include "algebra/groebner/detail/pair_criteria.h"
+#include "algebra/groebner/detail/residue_lanes.h"
+#include "algebra/groebner/detail/residue_system.h"
+#include "algebra/groebner/detail/residue_zero_reducer.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/parse.h"

@@ -1,4 +1,4 @@
-// The geobucket (algebra/groebner/geobucket.h) against a naive polynomial: a map from packed
+// The geobucket (algebra/groebner/detail/geobucket.h) against a naive polynomial: a map from packed
 // monomial to coefficient, updated term by term. Random multiples are subtracted, undone
 // (every term cancels back), scaled and popped, in rings of one to six words a monomial (the
 // merges are compiled for one to four words and run generically past that), with coefficients
@@ -15,7 +15,7 @@
 #include <flint/fmpz.h>
 
 #include "algebra/error.h"
-#include "algebra/groebner/geobucket.h"
+#include "algebra/groebner/detail/geobucket.h"
 #include "algebra/monomial.h"
 #include "algebra/monomial_order.h"
 #include "tests/support/test_data.h"

@@ -16,8 +16,8 @@
 #include <optional>
 #include <vector>
 
-#include "algebra/groebner/exact_zero_reducer.h"
-#include "algebra/groebner/residue_zero_reducer.h"
+#include "algebra/groebner/detail/exact_zero_reducer.h"
+#include "algebra/groebner/detail/residue_zero_reducer.h"
 #include "algebra/groebner/verify.h"
 
 namespace locus::algebra::detail {

@@ -1,4 +1,4 @@
-#include "algebra/groebner/reduction.h"
+#include "algebra/groebner/detail/reduction.h"
 #include "algebra/deadline.h"
 
 #include <algorithm>

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "algebra/groebner/reduction.h"
+#include "algebra/groebner/detail/reduction.h"
 #include "algebra/monomial_table.h"
 
 namespace locus::algebra::detail {

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "algebra/groebner/integer_polynomial.h"
+#include "algebra/groebner/detail/integer_polynomial.h"
 #include "algebra/monomial.h"
 
 namespace locus::algebra::detail {

@@ -1,4 +1,4 @@
-#include "algebra/groebner/residue_lanes.h"
+#include "algebra/groebner/detail/residue_lanes.h"
 
 #include <algorithm>
 #include <optional>
@@ -10,7 +10,7 @@
 #include <flint/ulong_extras.h>
 
 #include "algebra/detail/kernel_choice.h"
-#include "algebra/groebner/log_bound.h"
+#include "algebra/groebner/detail/log_bound.h"
 
 // GCC 12 sees the _mm512_undefined_epi32() inside AVX-512 intrinsics as uninitialized reads
 // (GCC bug 105593); the intrinsics are correct.

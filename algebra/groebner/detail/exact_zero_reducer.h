@@ -27,8 +27,8 @@
 
 #include <gmp.h>
 
-#include "algebra/groebner/reducer_rows.h"
-#include "algebra/groebner/reduction.h"
+#include "algebra/groebner/detail/reducer_rows.h"
+#include "algebra/groebner/detail/reduction.h"
 #include "algebra/monomial_table.h"
 
 namespace locus::algebra::detail {

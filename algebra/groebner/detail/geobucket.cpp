@@ -1,10 +1,10 @@
-#include "algebra/groebner/geobucket.h"
+#include "algebra/groebner/detail/geobucket.h"
 
 #include <algorithm>
 #include <array>
 
 #include "algebra/error.h"
-#include "algebra/groebner/small_integer.h"
+#include "algebra/groebner/detail/small_integer.h"
 
 namespace locus::algebra::detail {
 

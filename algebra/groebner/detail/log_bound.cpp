@@ -1,4 +1,4 @@
-#include "algebra/groebner/log_bound.h"
+#include "algebra/groebner/detail/log_bound.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "algebra/groebner/zero_reducer.h"
+#include "algebra/groebner/detail/zero_reducer.h"
 
 namespace locus::algebra::detail {
 

@@ -1,4 +1,4 @@
-#include "algebra/modular/fglm.h"
+#include "algebra/modular/detail/fglm.h"
 
 #include <algorithm>
 #include <map>

@@ -13,7 +13,7 @@
 
 #include <flint/fmpz.h>
 
-#include "algebra/groebner/integer_polynomial.h"
+#include "algebra/groebner/detail/integer_polynomial.h"
 
 namespace locus::algebra::detail {
 

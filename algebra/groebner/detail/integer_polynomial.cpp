@@ -1,4 +1,4 @@
-#include "algebra/groebner/integer_polynomial.h"
+#include "algebra/groebner/detail/integer_polynomial.h"
 
 #include <algorithm>
 

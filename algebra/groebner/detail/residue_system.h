@@ -17,8 +17,8 @@
 #include <flint/fmpz.h>
 #include <gmp.h>
 
-#include "algebra/groebner/log_bound.h"
-#include "algebra/groebner/residue_lanes.h"
+#include "algebra/groebner/detail/log_bound.h"
+#include "algebra/groebner/detail/residue_lanes.h"
 
 namespace locus::algebra::detail {
 

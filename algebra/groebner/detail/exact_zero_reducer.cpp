@@ -1,4 +1,4 @@
-#include "algebra/groebner/exact_zero_reducer.h"
+#include "algebra/groebner/detail/exact_zero_reducer.h"
 #include "algebra/deadline.h"
 
 #include <algorithm>

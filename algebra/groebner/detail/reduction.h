@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "algebra/groebner/geobucket.h"
-#include "algebra/groebner/pair_criteria.h"
+#include "algebra/groebner/detail/geobucket.h"
+#include "algebra/groebner/detail/pair_criteria.h"
 
 namespace locus::algebra::detail {
 

@@ -41,10 +41,10 @@
 #include <flint/fmpz.h>
 #include <gmp.h>
 
-#include "algebra/groebner/log_bound.h"
-#include "algebra/groebner/reducer_rows.h"
-#include "algebra/groebner/reduction.h"
-#include "algebra/groebner/residue_system.h"
+#include "algebra/groebner/detail/log_bound.h"
+#include "algebra/groebner/detail/reducer_rows.h"
+#include "algebra/groebner/detail/reduction.h"
+#include "algebra/groebner/detail/residue_system.h"
 #include "algebra/monomial_table.h"
 
 namespace locus::algebra::detail {

@@ -1,4 +1,4 @@
-#include "algebra/groebner/residue_zero_reducer.h"
+#include "algebra/groebner/detail/residue_zero_reducer.h"
 #include "algebra/deadline.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "algebra/groebner/pair_criteria.h"
+#include "algebra/groebner/detail/pair_criteria.h"
 
 #include <algorithm>
 

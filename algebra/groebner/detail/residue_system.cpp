@@ -1,4 +1,4 @@
-#include "algebra/groebner/residue_system.h"
+#include "algebra/groebner/detail/residue_system.h"
 
 #include <cstring>
 
