@@ -95,8 +95,8 @@ std::optional<std::vector<ModularPolynomial>> f4_replay(
 // f4_replay modulo several primes at once: generators[i] are the inputs modulo primes[i]
 // (odd primes below 2^31). The matrices are the same for every prime, so each entry holds one
 // residue a prime and each pivot subtraction is one vector multiply-add for all of them
-// (groebner/detail/residue_lanes.h). Per prime, the basis or nothing (that prime left the recording:
-// run f4 for it).
+// (groebner/detail/residue_lanes.h). Per prime, the basis or nothing (that prime left the
+// recording: run f4 for it).
 std::vector<std::optional<std::vector<ModularPolynomial>>> f4_replay_lanes(
     const F4Trace& trace, std::span<const std::vector<ModularPolynomial>> generators,
     std::span<const std::uint32_t> primes, const MonomialLayout& layout,

@@ -1,11 +1,11 @@
 // f4_replay_lanes (f4.h): a recorded F4 run repeated modulo several primes at once.
 //
 // The matrices of a replay are the same for every lucky prime; only the residues differ. So
-// every entry holds one residue a prime ("lane", groebner/detail/residue_lanes.h), and subtracting a
-// pivot row is one vector multiply-add per term for all the primes together, where a replay
-// one prime at a time pays the scan, the indexing and the loop per prime. A prime whose
-// computation leaves the recording (a row reducing to another leading column, an element with
-// another support, a generator vanishing) drops out of the batch; the others go on.
+// every entry holds one residue a prime ("lane", groebner/detail/residue_lanes.h), and subtracting
+// a pivot row is one vector multiply-add per term for all the primes together, where a replay one
+// prime at a time pays the scan, the indexing and the loop per prime. A prime whose computation
+// leaves the recording (a row reducing to another leading column, an element with another support,
+// a generator vanishing) drops out of the batch; the others go on.
 #include <algorithm>
 #include <chrono>
 #include <string>
