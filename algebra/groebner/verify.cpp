@@ -1,5 +1,6 @@
 #include "algebra/groebner/verify.h"
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -99,48 +100,55 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         elements.push_back({detail::to_integer_polynomial(g), false});
         detail::gebauer_moller_update(elements, pairs, elements.size() - 1, layout, counts);
     }
+    // One list of jobs: the generators (each must reduce to zero: the input lies in the ideal
+    // of the basis), then the pairs. On several threads the generators are checked beside the
+    // pairs: one of cyclic-8's (x0⋯x7 − 1) alone took 0.3–0.5 s, with the other core idle.
+    std::vector<detail::IntegerPolynomial> inputs;
+    inputs.reserve(generators.size());
+    for (const Polynomial& g : generators) {
+        inputs.push_back(detail::to_integer_polynomial(g));
+    }
+    const std::size_t jobs = inputs.size() + pairs.size();
+    auto job_reduces = [&](detail::ZeroReducer& r, std::size_t k,
+                           detail::ReductionCounts& job_steps) {
+        if (k < inputs.size()) {
+            return r.reduces_to_zero(inputs[k], job_steps);
+        }
+        const detail::CriticalPair& pair = pairs[k - inputs.size()];
+        return r.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(), job_steps);
+    };
     detail::ZeroReducer reducer(layout, elements);
     reducer.set_deadline(deadline);
     detail::ReductionCounts steps;
     try {
-        for (std::size_t i = 0; i < generators.size(); ++i) {
-            ++check.generators_checked;
-            if (!reducer.reduces_to_zero(detail::to_integer_polynomial(generators[i]), steps)) {
-                check.ok = false;
-                check.failure = "generator " + std::to_string(i + 1) + " does not reduce to zero";
-                return check;
-            }
-        }
         const auto add_statistics = [&](const detail::ZeroReducer& r) {
             check.work += r.statistics();
-        };
-        auto pair_reduces = [&](detail::ZeroReducer& r, const detail::CriticalPair& pair,
-                                detail::ReductionCounts& pair_steps) {
-            return r.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(),
-                                                  pair_steps);
         };
         // Progress after each pair: one report at a time; a thread that finds another reporting
         // goes on without waiting (so the last pair's report may be skipped: the count is
         // reported once more when all are done).
         std::atomic<std::size_t> pairs_done{0};
         std::mutex reporting;
-        const auto report = [&] {
+        const auto report = [&](std::size_t k) {
+            if (k < inputs.size()) {
+                return;
+            }
             const std::size_t done = ++pairs_done;
             if (progress && reporting.try_lock()) {
                 progress(done, pairs.size());
                 reporting.unlock();
             }
         };
-        std::size_t failed = pairs.size();  // the first pair, in order, that does not reduce
-        if (threads <= 1 || pairs.size() < 2) {
-            for (std::size_t k = 0; k < pairs.size() && failed == pairs.size(); ++k) {
-                if (!pair_reduces(reducer, pairs[k], steps)) {
+        std::size_t failed = jobs;  // the first job, in order, that does not reduce
+        if (threads <= 1 || jobs < 2) {
+            for (std::size_t k = 0; k < jobs && failed == jobs; ++k) {
+                if (!job_reduces(reducer, k, steps)) {
                     failed = k;
                 }
-                report();
+                report(k);
             }
         } else {
-            std::atomic<std::size_t> first_failure{pairs.size()};
+            std::atomic<std::size_t> first_failure{jobs};
             // Each thread numbers its own columns and finds its own reducer rows.
             tbb::enumerable_thread_specific<std::unique_ptr<detail::ZeroReducer>> reducers([&] {
                 auto r = std::make_unique<detail::ZeroReducer>(layout, elements);
@@ -151,21 +159,21 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             tbb::task_arena arena(threads);
             arena.execute([&] {
                 tbb::parallel_for(
-                    tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
+                    tbb::blocked_range<std::size_t>(0, jobs, 1),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                         detail::ZeroReducer& local = *reducers.local();
                         detail::ReductionCounts& local_steps = thread_steps.local();
                         for (std::size_t k = range.begin(); k < range.end(); ++k) {
-                            // Pairs after a known failure need no check.
+                            // Jobs after a known failure need no check.
                             if (k > first_failure.load(std::memory_order_relaxed)) {
                                 return;
                             }
-                            if (!pair_reduces(local, pairs[k], local_steps)) {
+                            if (!job_reduces(local, k, local_steps)) {
                                 std::size_t seen = first_failure.load();
                                 while (k < seen && !first_failure.compare_exchange_weak(seen, k)) {
                                 }
                             }
-                            report();
+                            report(k);
                         }
                     });
             });
@@ -183,12 +191,18 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         }
         add_statistics(reducer);
         check.work.reduction_steps = steps.steps;
-        check.pairs_checked = failed < pairs.size() ? failed + 1 : pairs.size();
-        if (failed < pairs.size()) {
+        // Counted as the one-thread order would: every job up to the first failure.
+        const std::size_t checked = failed < jobs ? failed + 1 : jobs;
+        check.generators_checked = std::min(checked, inputs.size());
+        check.pairs_checked = checked - check.generators_checked;
+        if (failed < inputs.size()) {
             check.ok = false;
-            check.failure = "S-polynomial of elements " + std::to_string(pairs[failed].first + 1) +
-                            " and " + std::to_string(pairs[failed].second + 1) +
-                            " does not reduce to zero";
+            check.failure = "generator " + std::to_string(failed + 1) + " does not reduce to zero";
+        } else if (failed < jobs) {
+            const detail::CriticalPair& pair = pairs[failed - inputs.size()];
+            check.ok = false;
+            check.failure = "S-polynomial of elements " + std::to_string(pair.first + 1) + " and " +
+                            std::to_string(pair.second + 1) + " does not reduce to zero";
         }
     } catch (const detail::ReductionInterrupted&) {
         throw Timeout("certification of the modular result");

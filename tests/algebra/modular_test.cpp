@@ -256,6 +256,31 @@ TEST(Modular, CertificationRejectsACorruptedBasis) {
     EXPECT_EQ(threaded.pairs_checked, single.pairs_checked);
 }
 
+// On several threads the generators are checked beside the pairs; a generator outside the
+// basis' ideal is still the failure reported, as on one thread, with no pair counted.
+TEST(Modular, ThreadedCertificationReportsTheFirstGeneratorOutsideTheIdeal) {
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura6.ideal"));
+    const GroebnerResult r = modular_groebner(ideal.generators);
+    std::vector<Polynomial> inputs = ideal.generators;
+    inputs.insert(inputs.begin() + 2,
+                  r.basis.back() + Polynomial::constant(r.basis.back().ring(), Rational(1, 7)));
+    const BasisCheck single = certify_groebner_basis(r.basis, inputs);
+    EXPECT_FALSE(single.ok);
+    EXPECT_EQ(single.generators_checked, 3u);
+    EXPECT_EQ(single.pairs_checked, 0u);
+    for (int threads : {2, 3}) {
+        const BasisCheck threaded = certify_groebner_basis(r.basis, inputs, std::nullopt, threads);
+        EXPECT_FALSE(threaded.ok);
+        EXPECT_EQ(threaded.failure, single.failure);
+        EXPECT_EQ(threaded.generators_checked, 3u);
+        EXPECT_EQ(threaded.pairs_checked, 0u);
+    }
+    const BasisCheck good = certify_groebner_basis(r.basis, ideal.generators, std::nullopt, 2);
+    EXPECT_TRUE(good.ok);
+    EXPECT_EQ(good.generators_checked, ideal.generators.size());
+}
+
 TEST(Modular, ThreadedCertificationAgreesWithOneThread) {
     for (const char* name : {"cyclic5", "katsura6", "eco6"}) {
         const IdealFile ideal = parse_ideal_file(
