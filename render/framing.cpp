@@ -77,9 +77,14 @@ EmptyPictureReason why_not_hit(const Surface& surface, const algebra::CompiledPo
         extent = in_world(estimate_extent(f, 1024, deadline), surface.frame);
     }
     if (extent->kind == SurfaceExtent::Kind::none_found) {
+        const std::string near = extent->newton_points == 0
+                                     ? ""
+                                     : " and through " + std::to_string(extent->newton_points) +
+                                           " points near f = 0 that Newton's steps reached";
         return {"no real point of it was found on " + std::to_string(extent->lines) +
-                    " lines through the origin: it may have none (as x^2+y^2+z^2+1), or be too "
-                    "small or too far from the origin to be met without a clip region around it",
+                    " lines through the origin" + near +
+                    ": it may have none (as x^2+y^2+z^2+1), or be too small or too far from the "
+                    "origin to be met without a clip region around it",
                 Remedy::clip_region};
     }
     std::optional<ClipBox> inside =

@@ -15,8 +15,11 @@
 //    lies on the surface, so the box is an inner approximation: a part thinner than the
 //    lattice spacing (about 0.11 rad seen from the centre) can be missed, and
 //    fitted_clip_sphere pads it.
+//    When no line through the origin meets the surface, the lines are drawn through the point
+//    Newton's steps along f's gradient reach from the origin (or from a corner of the unit
+//    cube): a unit sphere 10⁵ away, or one of radius 10⁻⁴ beside the origin, is met that way.
 //  * `none_found` is a bounded surface with no point on any of those lines: it may have no real
-//    point (x² + y² + z² + 1) or be smaller than the spacing seen from the centre.
+//    point (x² + y² + z² + 1) or be smaller than the spacing seen from every centre tried.
 #pragma once
 
 #include <chrono>
@@ -32,6 +35,7 @@ struct SurfaceExtent {
     enum class Kind { bounded, unbounded, none_found } kind = Kind::unbounded;
     Vec3 low{0.0}, high{0.0};  // bounded: the box of the points found
     int lines = 0;             // lines traced
+    int newton_points = 0;     // centres other than the origin that Newton's steps reached
 };
 
 // Throws Timeout when `deadline` passes (checked every few lines).
@@ -46,8 +50,8 @@ std::optional<ClipBox> box_in_region(
     std::optional<std::chrono::steady_clock::time_point> deadline = {});
 
 // The clip sphere about a bounded extent: centred on its box, with 1.05 times the box's
-// half-diagonal (and 1e-3 more at least, for a surface that is a point) as radius; nothing
-// unless the extent is bounded.
+// half-diagonal as radius (1e-3 for a surface that is a point); nothing unless the extent is
+// bounded.
 std::optional<ClipSphere> fitted_clip_sphere(const SurfaceExtent& extent);
 
 }  // namespace locus::render

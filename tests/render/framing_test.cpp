@@ -57,6 +57,28 @@ TEST(SurfaceExtent, ASurfaceWithoutRealPointsHasNoneFound) {
     EXPECT_FALSE(fitted_clip_sphere(extent).has_value());
 }
 
+// A component that no line through the origin meets — far away, or small beside the
+// origin — is found from the point Newton's steps reach; its box is the closed-form one and its
+// fitted sphere holds it snugly.
+TEST(SurfaceExtent, FarAndSmallSurfacesAreFoundFromNewtonsPoint) {
+    expect_box_near(estimate_extent(algebra::compile_surface("(x-1000)^2+y^2+z^2-1")),
+                    {999.0, -1.0, -1.0}, {1001.0, 1.0, 1.0}, 0.01);
+    expect_box_near(estimate_extent(algebra::compile_surface("(x-100000)^2+(y-3)^2+z^2-4")),
+                    {99998.0, 1.0, -2.0}, {100002.0, 5.0, 2.0}, 0.02);
+    const SurfaceExtent small =
+        estimate_extent(algebra::compile_surface("(x-1/2)^2+y^2+z^2-1/100000000"));
+    expect_box_near(small, {0.5 - 1e-4, -1e-4, -1e-4}, {0.5 + 1e-4, 1e-4, 1e-4}, 1e-6);
+    const std::optional<ClipSphere> fitted = fitted_clip_sphere(small);
+    ASSERT_TRUE(fitted.has_value());
+    EXPECT_NEAR(fitted->center.x, 0.5, 1e-6);
+    EXPECT_GE(fitted->radius, 1e-4 * std::sqrt(3.0));
+    EXPECT_LE(fitted->radius, 2e-4 * std::sqrt(3.0));
+    // A far torus (R = 3, r = 1, 50 away along x).
+    expect_box_near(
+        estimate_extent(algebra::compile_surface("((x-50)^2+y^2+z^2+8)^2-36*((x-50)^2+y^2)")),
+        {46.0, -4.0, -1.0}, {54.0, 4.0, 1.0}, 0.03);
+}
+
 // x^T M x − 2 (M c)^T x + c^T M c − 1 for M = R diag(1/a²) R^T, as an equation over Q.
 std::string ellipsoid_equation(const double rotation[3][3], const Vec3& axes, const Vec3& centre) {
     double m[3][3];
