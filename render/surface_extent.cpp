@@ -309,11 +309,14 @@ std::optional<Vec3> newton_projection(const algebra::CompiledPolynomial& f, Vec3
     for (int step = 0; step < kSteps; ++step) {
         const algebra::ValueGradient vg = f.value_gradient({x.x, x.y, x.z});
         const Vec3 g{vg.gradient[0], vg.gradient[1], vg.gradient[2]};
-        const double g2 = glm::dot(g, g);
-        if (!std::isfinite(vg.value) || !std::isfinite(g2) || !(g2 > 0.0)) {
+        // |∇f|² computed on the gradient scaled to its largest component: far out, its square
+        // overflows the doubles (|∇f| above 1e154) where ∇f itself does not.
+        const double scale = std::max({std::abs(g.x), std::abs(g.y), std::abs(g.z)});
+        if (!std::isfinite(vg.value) || !std::isfinite(scale) || !(scale > 0.0)) {
             return std::nullopt;
         }
-        const Vec3 move = (vg.value / g2) * g;
+        const Vec3 unit = g / scale;
+        const Vec3 move = (vg.value / scale / glm::dot(unit, unit)) * unit;
         x -= move;
         if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) {
             return std::nullopt;
