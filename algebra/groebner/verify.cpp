@@ -102,7 +102,8 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
     }
     // One list of jobs: the generators (each must reduce to zero: the input lies in the ideal
     // of the basis), then the pairs. On several threads the generators are checked beside the
-    // pairs: one of cyclic-8's (x0⋯x7 − 1) alone took 0.3–0.5 s, with the other core idle.
+    // pairs: one of cyclic-8's (its degree-7 sum, 0.28 s of the eight's 0.3) held one core
+    // while the other was idle.
     std::vector<detail::IntegerPolynomial> inputs;
     inputs.reserve(generators.size());
     for (const Polynomial& g : generators) {
