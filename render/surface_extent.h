@@ -3,7 +3,10 @@
 //
 // The answer is an estimate for framing, not a certificate, and says so in its kind:
 //  * A surface is `bounded` when the top-degree form f_d keeps one sign, away from zero, on
-//    every sampled direction (f_d definite: f ≠ 0 far out). An odd degree, a sign change of
+//    every sampled direction (f_d definite: f ≠ 0 far out), or certainly keeps one sign by its
+//    terms' form (even powers with coefficients of one sign, each variable's pure power among
+//    them: x⁴⁰ + y⁴⁰ + z⁴⁰, whose least value on the sphere is too small for the sampled
+//    test). An odd degree, a sign change of
 //    f_d (then f changes sign on every large sphere) or a near-zero of f_d gives `unbounded`;
 //    so does a bounded surface whose f_d merely vanishes somewhere (x⁴ + y² + z² − 1), which
 //    keeps the documented default frame.

@@ -52,6 +52,21 @@ TEST(SurfaceExtent, SurfacesThatReachInfinityAreNotBounded) {
     }
 }
 
+// x⁴⁰ + y⁴⁰ + z⁴⁰ = 10⁴⁰ reaches x = ±10 on the axis (y = z = 0) and no farther: its box is
+// [−10, 10]³. Its top form's least value on the unit sphere is 3⁻¹⁹ of its largest, below the
+// sampled definiteness test's 1e-6 (it rendered an empty picture at the default frame); it is
+// bounded by its terms' form. Without a pure power of every variable, or with terms of both
+// signs, that form proves nothing, and the sampled test still answers.
+TEST(SurfaceExtent, HighDegreeSumsOfEvenPowersAreBounded) {
+    expect_box_near(estimate_extent(algebra::compile_surface("x^40+y^40+z^40-10^40")), Vec3(-10.0),
+                    Vec3(10.0), 0.01);
+    for (const char* equation : {"(x^2+y^2)*(x^38+y^38+z^38)-1",  // x ≈ z^-19 far along z
+                                 "x^40+y^40-z^40-1"}) {           // f_d changes sign
+        EXPECT_EQ(estimate_extent(algebra::compile_surface(equation)).kind, Kind::unbounded)
+            << equation;
+    }
+}
+
 TEST(SurfaceExtent, ASurfaceWithoutRealPointsHasNoneFound) {
     const SurfaceExtent extent = estimate_extent(algebra::compile_surface("x^2+y^2+z^2+1"));
     EXPECT_EQ(extent.kind, Kind::none_found);
