@@ -261,6 +261,9 @@ void warn_nothing_hit(const render::Scene& scene,
             case Remedy::fit:
                 reason += " (--fit frames it)";
                 break;
+            case Remedy::larger_clip_region:
+                reason += " (a larger --clip-radius, or clip keys in a scene file, takes it in)";
+                break;
             case Remedy::finer_sampling:
                 reason += " (try --samples or a closer --eye)";
                 break;

@@ -103,14 +103,27 @@ EmptyPictureReason why_not_hit(const Surface& surface, const algebra::CompiledPo
                         format_point(extent->high) + ", too small a part of it for a pixel",
                     Remedy::fit};
         }
-        std::string where;
+        const std::string missed =
+            "no point of it was found inside its clip region, " + describe(surface.clip);
         if (extent->kind == SurfaceExtent::Kind::bounded) {
-            where = "; the points found elsewhere span " + format_point(extent->low) + " to " +
-                    format_point(extent->high);
+            return {missed + "; the points found elsewhere span " + format_point(extent->low) +
+                        " to " + format_point(extent->high),
+                    Remedy::fit};
         }
-        return {
-            "no point of it was found inside its clip region, " + describe(surface.clip) + where,
-            extent->kind == SurfaceExtent::Kind::bounded ? Remedy::fit : Remedy::none};
+        // Not bounded (or not known to be): where it is nearest the region's centre, so that
+        // a larger region can take it in (a plane 100 away, a surface whose f_d vanishes).
+        const ClipSphere around = bounding_sphere(surface.clip);
+        const std::optional<Vec3> nearest =
+            nearest_point_on_lines(f, surface.frame.to_local(around.center), 1024, deadline);
+        if (!nearest) {
+            return {missed, Remedy::none};
+        }
+        const Vec3 point = surface.frame.to_world(*nearest);
+        char distance[32];
+        std::snprintf(distance, sizeof distance, "%.4g", scaled_length(point - around.center));
+        return {missed + "; the nearest point found on lines through its centre is " +
+                    format_point(point) + ", " + distance + " away",
+                Remedy::larger_clip_region};
     }
     const ClipSphere visible = bounding_sphere(ClipRegion(*inside));
     const Vec3 forward = scaled_normalize(camera.target - camera.eye);

@@ -28,10 +28,11 @@ std::vector<std::optional<SurfaceExtent>> fit_clip_regions(
 // front end names its own way to do it (the CLI its flags; the library names none).
 struct EmptyPictureReason {
     enum class Remedy {
-        none,            // behind the camera, outside the field of view: move the camera
-        clip_region,     // nothing found near the origin: give a clip region around the surface
-        fit,             // points found outside the clip region: frame the surface's extent
-        finer_sampling,  // met nowhere though inside and in view: more samples, a closer camera
+        none,                // behind the camera, outside the field of view: move the camera
+        clip_region,         // nothing found near the origin: give a clip region around the surface
+        larger_clip_region,  // the surface lies beyond its clip region: enlarge or move it
+        fit,                 // points found outside the clip region: frame the surface's extent
+        finer_sampling,      // met nowhere though inside and in view: more samples, a closer camera
     };
     std::string text;
     Remedy remedy = Remedy::none;

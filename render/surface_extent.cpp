@@ -223,6 +223,48 @@ class ExtentSearch {
         return inwards.at(hit.t);
     }
 
+    // The surface's point nearest `centre` on the lines through it along the lattice's
+    // directions, both ways (each traced outwards over the Fujiwara bound of its roots; a
+    // line along which f_d vanishes has none and is skipped); nothing when no line meets it.
+    std::optional<Vec3> nearest_point(const Vec3& centre) const {
+        std::vector<double> nearest(2 * directions_.size(), INFINITY);
+        std::vector<double> reaches(2 * directions_.size());
+        double largest = 0.0;
+        for (std::size_t i = 0; i < reaches.size(); ++i) {
+            const Vec3 u = i % 2 == 0 ? directions_[i / 2] : -directions_[i / 2];
+            reaches[i] = root_bound(centre, u);
+            if (std::isfinite(reaches[i])) {
+                largest = std::max(largest, reaches[i]);
+            }
+        }
+        if (!(largest > 0.0)) {
+            return std::nullopt;
+        }
+        const SurfaceTracer tracer(f_, TraceMethod::certified, largest);
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, reaches.size(), 64),
+            [&](const tbb::blocked_range<std::size_t>& range) {
+                check_deadline(0);
+                for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                    if (!std::isfinite(reaches[i])) {
+                        continue;
+                    }
+                    const Vec3 u = i % 2 == 0 ? directions_[i / 2] : -directions_[i / 2];
+                    const RootResult hit = tracer.first_hit(Ray{centre, u}, {0.0, reaches[i]});
+                    if (hit.status == RootStatus::hit) {
+                        nearest[i] = hit.t;
+                    }
+                }
+            });
+        const auto closest = std::min_element(nearest.begin(), nearest.end());
+        if (!std::isfinite(*closest)) {
+            return std::nullopt;
+        }
+        const auto i = static_cast<std::size_t>(closest - nearest.begin());
+        const Vec3 u = i % 2 == 0 ? directions_[i / 2] : -directions_[i / 2];
+        return centre + *closest * u;
+    }
+
     // The outermost point along every lattice direction through `centre` (nothing where none
     // was found), reached as reach(u) says.
     template <class Reach>
@@ -446,6 +488,11 @@ std::optional<ClipBox> box_in_region(const algebra::CompiledPolynomial& f, const
         return std::nullopt;
     }
     return box;
+}
+
+std::optional<Vec3> nearest_point_on_lines(const algebra::CompiledPolynomial& f, const Vec3& centre,
+                                           int directions, std::optional<TimePoint> deadline) {
+    return ExtentSearch(f, directions, deadline).nearest_point(centre);
 }
 
 std::optional<ClipSphere> fitted_clip_sphere(const SurfaceExtent& extent) {

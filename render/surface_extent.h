@@ -52,6 +52,13 @@ std::optional<ClipBox> box_in_region(
     const algebra::CompiledPolynomial& f, const ClipRegion& region, int directions = 1024,
     std::optional<std::chrono::steady_clock::time_point> deadline = {});
 
+// The point of the surface nearest `centre` on the lines through it along `directions`
+// lattice directions, both ways, traced by the certified tracer; nothing when none meets it.
+// For saying where a surface is that its clip region missed: an estimate, like the extents.
+std::optional<Vec3> nearest_point_on_lines(
+    const algebra::CompiledPolynomial& f, const Vec3& centre, int directions = 1024,
+    std::optional<std::chrono::steady_clock::time_point> deadline = {});
+
 // The clip sphere about a bounded extent: centred on its box, with 1.05 times the box's
 // half-diagonal as radius (1e-3 for a surface that is a point); nothing unless the extent is
 // bounded.

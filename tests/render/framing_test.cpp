@@ -365,12 +365,41 @@ TEST(Framing, AnEmptyPictureIsExplained) {
     imaginary.equation = "x^2+y^2+z^2+1";
     expect(why_not_hit(imaginary, algebra::compile_surface(imaginary.equation), camera, 32, 32),
            "no real point of it was found", Remedy::clip_region);
-    // A cylinder (not bounded) clipped away from its wall: no extent to frame.
+    // A cylinder (not bounded) clipped away from its wall: no extent to frame, but where its
+    // nearest point is, 1 from the box's centre, for a larger region to take it in.
     Surface cylinder;
     cylinder.equation = "x^2+y^2-1";
     cylinder.clip = ClipBox{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}};
-    expect(why_not_hit(cylinder, algebra::compile_surface(cylinder.equation), camera, 32, 32),
-           "inside its clip region, the box from", Remedy::none);
+    const EmptyPictureReason wall =
+        why_not_hit(cylinder, algebra::compile_surface(cylinder.equation), camera, 32, 32);
+    expect(wall, "inside its clip region, the box from", Remedy::larger_clip_region);
+    expect(wall, "the nearest point found on lines through its centre is",
+           Remedy::larger_clip_region);
+    // A plane 100 away from the default clip sphere.
+    Surface plane;
+    plane.equation = "x-100";
+    expect(why_not_hit(plane, algebra::compile_surface(plane.equation), camera, 32, 32),
+           "the nearest point found on lines through its centre is (100,",
+           Remedy::larger_clip_region);
+}
+
+// The nearest point on the lattice's lines lies on the surface, and near the nearest point: a
+// line at most half the lattice's spacing (0.11 rad) off the best direction, which lengthens
+// the plane's distance by 1/cos(0.055) ≈ 1.0015 and, from 4.5 away, the unit sphere's by under
+// 1 % (a factor 1.006 and 1.02 allowed).
+TEST(SurfaceExtent, TheNearestPointOnTheLinesIsNearTheTrueOne) {
+    const std::optional<Vec3> on_plane =
+        nearest_point_on_lines(algebra::compile_surface("x+y-100"), Vec3(0.0));
+    ASSERT_TRUE(on_plane.has_value());
+    EXPECT_NEAR(on_plane->x + on_plane->y, 100.0, 1e-9);
+    EXPECT_LE(glm::length(*on_plane), 100.0 / std::sqrt(2.0) * 1.006);
+    const std::optional<Vec3> on_sphere =
+        nearest_point_on_lines(algebra::compile_surface("(x-5)^2+y^2+z^2-1"), Vec3(1.0, 2.0, 0.0));
+    ASSERT_TRUE(on_sphere.has_value());
+    EXPECT_NEAR(glm::length(*on_sphere - Vec3(5.0, 0.0, 0.0)), 1.0, 1e-9);
+    // The sphere's nearest point to (1, 2, 0) is √20 − 1 away.
+    EXPECT_LE(glm::length(*on_sphere - Vec3(1.0, 2.0, 0.0)), (std::sqrt(20.0) - 1.0) * 1.02);
+    EXPECT_FALSE(nearest_point_on_lines(algebra::compile_surface("x^2+y^2+z^2+1"), Vec3(0.0)));
 }
 
 }  // namespace
