@@ -212,8 +212,9 @@ TEST(SurfaceExtent, RandomEllipsoidsAreInsideTheirFittedSpheres) {
 // (axes 10⁻⁴ to 10⁻³, 0.2 to 0.8 away), against the closed-form boxes. Every one found is
 // framed: its box inside the true one, reaching 99 % of its width (the search over directions
 // stops short of 99.9 % on ridges of some), the fitted sphere around it. Newton's steps do not
-// always arrive: along the gradient they zigzag across an elongated ellipsoid far away, and
-// those are reported as none found (2 % allowed; 3 of the 200 far ones here).
+// always arrive: along the gradient they zigzag across an elongated ellipsoid far away. The
+// lines through where they stop find 2 of the 3 far ones here that zigzag; the third is
+// reported as none found (1 % allowed: 3 failed it before the stopping point was used).
 TEST(SurfaceExtent, RandomFarAndSmallEllipsoidsAreFramed) {
     std::mt19937_64 random(20261128);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(2.0, 5.0), axis(0.1, 4.0),
@@ -254,7 +255,7 @@ TEST(SurfaceExtent, RandomFarAndSmallEllipsoidsAreFramed) {
         }
         expect_extent_fits(e, extent, 1e-9, 0.99);
     }
-    EXPECT_LE(far_missed, kTrials / 50);
+    EXPECT_LE(far_missed, kTrials / 100);
     EXPECT_EQ(small_missed, 0);
 }
 
