@@ -223,46 +223,25 @@ class ExtentSearch {
         return inwards.at(hit.t);
     }
 
-    // The surface's point nearest `centre` on the lines through it along the lattice's
-    // directions, both ways (each traced outwards over the Fujiwara bound of its roots; a
-    // line along which f_d vanishes has none and is skipped); nothing when no line meets it.
+    // The surface's point nearest `centre` on the rays from it along the lattice's directions
+    // (which cover the whole sphere), each traced outwards over the Fujiwara bound of its roots
+    // (a ray along which f_d vanishes has none and is skipped); nothing when no ray meets it.
     std::optional<Vec3> nearest_point(const Vec3& centre) const {
-        std::vector<double> nearest(2 * directions_.size(), INFINITY);
-        std::vector<double> reaches(2 * directions_.size());
-        double largest = 0.0;
-        for (std::size_t i = 0; i < reaches.size(); ++i) {
-            const Vec3 u = i % 2 == 0 ? directions_[i / 2] : -directions_[i / 2];
-            reaches[i] = root_bound(centre, u);
-            if (std::isfinite(reaches[i])) {
-                largest = std::max(largest, reaches[i]);
+        std::vector<double> reaches(directions_.size()), nearest(directions_.size(), INFINITY);
+        for (std::size_t i = 0; i < directions_.size(); ++i) {
+            reaches[i] = root_bound(centre, directions_[i]);
+        }
+        trace_lattice(reaches, [&](const SurfaceTracer& tracer, std::size_t i) {
+            const RootResult hit = tracer.first_hit(Ray{centre, directions_[i]}, {0.0, reaches[i]});
+            if (hit.status == RootStatus::hit) {
+                nearest[i] = hit.t;
             }
-        }
-        if (!(largest > 0.0)) {
-            return std::nullopt;
-        }
-        const SurfaceTracer tracer(f_, TraceMethod::certified, largest);
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, reaches.size(), 64),
-            [&](const tbb::blocked_range<std::size_t>& range) {
-                check_deadline(0);
-                for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                    if (!std::isfinite(reaches[i])) {
-                        continue;
-                    }
-                    const Vec3 u = i % 2 == 0 ? directions_[i / 2] : -directions_[i / 2];
-                    const RootResult hit = tracer.first_hit(Ray{centre, u}, {0.0, reaches[i]});
-                    if (hit.status == RootStatus::hit) {
-                        nearest[i] = hit.t;
-                    }
-                }
-            });
+        });
         const auto closest = std::min_element(nearest.begin(), nearest.end());
         if (!std::isfinite(*closest)) {
             return std::nullopt;
         }
-        const auto i = static_cast<std::size_t>(closest - nearest.begin());
-        const Vec3 u = i % 2 == 0 ? directions_[i / 2] : -directions_[i / 2];
-        return centre + *closest * u;
+        return centre + *closest * directions_[static_cast<std::size_t>(closest - nearest.begin())];
     }
 
     // The outermost point along every lattice direction through `centre` (nothing where none
@@ -272,28 +251,14 @@ class ExtentSearch {
                                                       const ClipRegion* region, int& lines) const {
         std::vector<std::optional<Vec3>> points(directions_.size());
         std::vector<double> reaches(directions_.size());
-        double largest = 0.0;
         for (std::size_t i = 0; i < directions_.size(); ++i) {
             reaches[i] = reach(directions_[i]);
-            if (std::isfinite(reaches[i])) {
-                largest = std::max(largest, reaches[i]);
-            }
         }
-        if (!(largest > 0.0)) {
-            return points;
+        if (trace_lattice(reaches, [&](const SurfaceTracer& tracer, std::size_t i) {
+                points[i] = outermost_point(tracer, centre, directions_[i], reaches[i], region);
+            })) {
+            lines += static_cast<int>(directions_.size());
         }
-        // The certified tracer works to a tolerance relative to the scene's size.
-        const SurfaceTracer tracer(f_, TraceMethod::certified, largest);
-        // Lines are independent; chunks of 64 check the deadline once each.
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, directions_.size(), 64),
-                          [&](const tbb::blocked_range<std::size_t>& range) {
-                              check_deadline(0);
-                              for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                                  points[i] = outermost_point(tracer, centre, directions_[i],
-                                                              reaches[i], region);
-                              }
-                          });
-        lines += static_cast<int>(directions_.size());
         return points;
     }
 
@@ -355,6 +320,34 @@ class ExtentSearch {
     }
 
   private:
+    // Calls trace(tracer, i) for every lattice direction i with a finite reach, in chunks of 64
+    // on threads (each checks the deadline once), with one certified tracer whose tolerance is
+    // relative to the largest reach (the scene's size). False, tracing nothing, when no reach
+    // is positive and finite.
+    template <class Trace>
+    bool trace_lattice(const std::vector<double>& reaches, const Trace& trace) const {
+        double largest = 0.0;
+        for (const double reach : reaches) {
+            if (std::isfinite(reach)) {
+                largest = std::max(largest, reach);
+            }
+        }
+        if (!(largest > 0.0)) {
+            return false;
+        }
+        const SurfaceTracer tracer(f_, TraceMethod::certified, largest);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, reaches.size(), 64),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              check_deadline(0);
+                              for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                                  if (std::isfinite(reaches[i])) {
+                                      trace(tracer, i);
+                                  }
+                              }
+                          });
+        return true;
+    }
+
     void check_deadline(std::size_t i) const {
         if (i % 64 == 0 && deadline_passed(deadline_)) {
             throw Timeout("estimating the surface's extent");

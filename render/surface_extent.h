@@ -52,8 +52,9 @@ std::optional<ClipBox> box_in_region(
     const algebra::CompiledPolynomial& f, const ClipRegion& region, int directions = 1024,
     std::optional<std::chrono::steady_clock::time_point> deadline = {});
 
-// The point of the surface nearest `centre` on the lines through it along `directions`
-// lattice directions, both ways, traced by the certified tracer; nothing when none meets it.
+// The point of the surface nearest `centre` on the rays from it along `directions` lattice
+// directions (spread over the whole sphere), traced by the certified tracer; nothing when none
+// meets it.
 // For saying where a surface is that its clip region missed: an estimate, like the extents.
 std::optional<Vec3> nearest_point_on_lines(
     const algebra::CompiledPolynomial& f, const Vec3& centre, int directions = 1024,
