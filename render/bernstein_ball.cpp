@@ -12,8 +12,8 @@ namespace {
 
 constexpr double kUnit = 0x1.0p-53;
 
-// γ_k = k·u/(1 − k·u), the bound on k roundings.
-double gamma(int k) {
+// γ_k = k·u/(1 − k·u), the bound on k roundings (a constant where k is).
+constexpr double gamma(int k) {
     return k * kUnit / (1.0 - k * kUnit);
 }
 
@@ -149,10 +149,6 @@ BernsteinBall to_bernstein(const RestrictionBall& g) {
     return out;
 }
 
-void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right) {
-    split_at(whole, 0.5, left, right);
-}
-
 namespace {
 
 // A coefficient and its radius, which de Casteljau's scheme combines with the same weights: one
@@ -212,7 +208,121 @@ double de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
     return largest;
 }
 
+// Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is exact)
+// and three otherwise (the weight 1 − τ, the products, the sum), each at most u times an entry
+// no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are rounded as often.
+void widen_pieces(int n, double tau, double largest, BernsteinBall& left, BernsteinBall& right) {
+    const double rounding = gamma(tau == 0.5 ? n + 1 : 3 * n + 3);
+    const double widen = 1.0 + 2.0 * rounding;
+    const double value_error = rounding * largest * widen;
+    left.degree = right.degree = n;
+    for (int i = 0; i <= n; ++i) {
+        left.r[i] = (left.r[i] + value_error) * widen + kUnderflow;
+        right.r[i] = (right.r[i] + value_error) * widen + kUnderflow;
+    }
+}
+
+// Entries at or past this make the sums of de_casteljau_half overflow at degree 64 (2^957·2^64
+// < 2^1024): such balls take the weighted scheme, whose entries never grow.
+constexpr double kHalvingLimit = 0x1.0p950;
+
+// De Casteljau at τ = 1/2 without the halvings: the row's sums p_i + p_{i+1} are 2^level times
+// the weighted scheme's entries and round exactly as they do (scaling by a power of two commutes
+// with rounding), so each piece's coefficient is the sum times 2^−level, the same double as
+// before — one addition per entry where the weights cost two multiplications and an addition,
+// and one multiplication per coefficient — and each radius is widened as it is written (as
+// widen_pieces would, in the same order: the same doubles). Halving is the isolation's every
+// split. Returns false, having written nothing, when an entry reaches kHalvingLimit.
+template <int Fixed>
+bool de_casteljau_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right) {
+    const int n = Fixed >= 0 ? Fixed : whole.degree;
+    std::array<ValueRadius, (Fixed >= 0 ? Fixed : kMaxDegree) + 1> p;
+    ValueRadius largest = {0.0, 0.0};  // max|b_i|, max r_i
+#pragma GCC unroll 16
+    for (int i = 0; i <= n; ++i) {
+        p[i] = ValueRadius{whole.b[i], whole.r[i]};
+        const ValueRadius magnitude = {std::abs(whole.b[i]), whole.r[i]};
+        largest = magnitude > largest ? magnitude : largest;
+    }
+    if (!(largest[0] < kHalvingLimit && largest[1] < kHalvingLimit)) {
+        return false;
+    }
+    const double rounding = gamma(n + 1);  // as widen_pieces at τ = 1/2
+    const double widen = 1.0 + 2.0 * rounding;
+    const double value_error = rounding * largest[0] * widen;
+    const auto radius = [&](double r) { return (r + value_error) * widen + kUnderflow; };
+    left.degree = right.degree = n;
+    left.b[0] = p[0][0];
+    left.r[0] = radius(p[0][1]);
+    right.b[n] = p[n][0];
+    right.r[n] = radius(p[n][1]);
+    double scale = 1.0;
+#pragma GCC unroll 16
+    for (int level = 1; level <= n; ++level) {
+#pragma GCC unroll 16
+        for (int i = 0; i <= n - level; ++i) {
+            p[i] = p[i] + p[i + 1];
+        }
+        scale *= 0.5;  // exact down to 2^−64
+        const ValueRadius to_piece = {scale, scale};
+        const ValueRadius first = p[0] * to_piece, last = p[n - level] * to_piece;
+        left.b[level] = first[0];
+        left.r[level] = radius(first[1]);
+        right.b[n - level] = last[0];
+        right.r[n - level] = radius(last[1]);
+    }
+    return true;
+}
+
 }  // namespace
+
+void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right) {
+    bool done = false;
+    switch (whole.degree) {
+    case 1:
+        done = de_casteljau_half<1>(whole, left, right);
+        break;
+    case 2:
+        done = de_casteljau_half<2>(whole, left, right);
+        break;
+    case 3:
+        done = de_casteljau_half<3>(whole, left, right);
+        break;
+    case 4:
+        done = de_casteljau_half<4>(whole, left, right);
+        break;
+    case 5:
+        done = de_casteljau_half<5>(whole, left, right);
+        break;
+    case 6:
+        done = de_casteljau_half<6>(whole, left, right);
+        break;
+    case 7:
+        done = de_casteljau_half<7>(whole, left, right);
+        break;
+    case 8:
+        done = de_casteljau_half<8>(whole, left, right);
+        break;
+    case 9:
+        done = de_casteljau_half<9>(whole, left, right);
+        break;
+    case 10:
+        done = de_casteljau_half<10>(whole, left, right);
+        break;
+    case 11:
+        done = de_casteljau_half<11>(whole, left, right);
+        break;
+    case 12:
+        done = de_casteljau_half<12>(whole, left, right);
+        break;
+    default:
+        done = whole.degree > 0 && de_casteljau_half<-1>(whole, left, right);
+        break;
+    }
+    if (!done) {
+        split_at(whole, 0.5, left, right);  // degree ≤ 0, or entries that the sums would overflow
+    }
+}
 
 void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right) {
     const int n = whole.degree;
@@ -262,18 +372,7 @@ void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, Berns
         largest = de_casteljau<-1>(whole, tau, left, right);
         break;
     }
-    // Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is
-    // exact) and three otherwise (the weight 1 − τ, the products, the sum), each at most u
-    // times an entry no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are
-    // rounded as often.
-    const double rounding = gamma(tau == 0.5 ? n + 1 : 3 * n + 3);
-    const double widen = 1.0 + 2.0 * rounding;
-    const double value_error = rounding * largest * widen;
-    left.degree = right.degree = n;
-    for (int i = 0; i <= n; ++i) {
-        left.r[i] = (left.r[i] + value_error) * widen + kUnderflow;
-        right.r[i] = (right.r[i] + value_error) * widen + kUnderflow;
-    }
+    widen_pieces(n, tau, largest, left, right);
 }
 
 BallValue evaluate(const BernsteinBall& g, double sigma) {

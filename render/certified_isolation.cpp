@@ -4,27 +4,56 @@
 #include <cmath>
 #include <cstdint>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace locus::render {
 
 namespace {
 
-// The sign changes of the coefficients when every sign is certain, −1 otherwise: without
-// branches, unrolled for a degree known at compile time (`Fixed` ≥ 0; −1 reads the ball's).
+// The set bits of x, inline: the baseline x86-64 has no popcnt instruction, and std::popcount
+// there is a call into libgcc (2 % of a degree-8 frame).
+constexpr int bit_count(std::uint64_t x) {
+    x = x - ((x >> 1) & 0x5555555555555555ULL);
+    x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fULL;
+    return static_cast<int>((x * 0x0101010101010101ULL) >> 56);
+}
+static_assert(bit_count(0) == 0 && bit_count(~0ULL) == 64 && bit_count(0x8000000000000001ULL) == 2);
+
+// The sign changes of the coefficients when every sign is certain, −1 otherwise, for degree
+// ≤ 62: a bit a coefficient for "certainly positive" and one for "certainly negative", two
+// coefficients per SSE2 comparison (movmskpd), then the changes are the bits where the positive
+// mask differs from its neighbour — no chain of dependent tests through the coefficients.
+// Unrolled for a degree known at compile time (`Fixed` ≥ 0; −1 reads the ball's).
 template <int Fixed>
 int certain_sign_changes(const BernsteinBall& g) {
     const int n = Fixed >= 0 ? Fixed : g.degree;
-    bool positive = g.b[0] - g.r[0] > 0.0, negative = g.b[0] + g.r[0] < 0.0;
-    bool uncertain = !(positive || negative);
-    int changes = 0;
-#pragma GCC unroll 16
-    for (int i = 1; i <= n; ++i) {
-        const bool next_positive = g.b[i] - g.r[i] > 0.0, next_negative = g.b[i] + g.r[i] < 0.0;
-        uncertain = uncertain || !(next_positive || next_negative);
-        changes += static_cast<int>((positive && next_negative) || (negative && next_positive));
-        positive = next_positive;
-        negative = next_negative;
+    std::uint64_t positive = 0, negative = 0;
+    int i = 0;
+#if defined(__SSE2__)
+    const __m128d zero = _mm_setzero_pd();
+#pragma GCC unroll 8
+    for (; i + 1 <= n; i += 2) {
+        const __m128d b = _mm_loadu_pd(&g.b[static_cast<std::size_t>(i)]);
+        const __m128d r = _mm_loadu_pd(&g.r[static_cast<std::size_t>(i)]);
+        positive |=
+            static_cast<std::uint64_t>(_mm_movemask_pd(_mm_cmpgt_pd(_mm_sub_pd(b, r), zero))) << i;
+        negative |=
+            static_cast<std::uint64_t>(_mm_movemask_pd(_mm_cmplt_pd(_mm_add_pd(b, r), zero))) << i;
     }
-    return uncertain ? -1 : changes;
+#endif
+    for (; i <= n; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        positive |= static_cast<std::uint64_t>(g.b[k] - g.r[k] > 0.0) << i;
+        negative |= static_cast<std::uint64_t>(g.b[k] + g.r[k] < 0.0) << i;
+    }
+    const std::uint64_t every = (std::uint64_t{2} << n) - 1;
+    if ((positive | negative) != every) {
+        return -1;
+    }
+    return bit_count((positive ^ (positive >> 1)) & (every >> 1));
 }
 
 }  // namespace
@@ -75,7 +104,9 @@ int most_sign_changes(const BernsteinBall& g) {
         changes = certain_sign_changes<12>(g);
         break;
     default:
-        changes = certain_sign_changes<-1>(g);
+        if (g.degree <= 62) {
+            changes = certain_sign_changes<-1>(g);
+        }
         break;
     }
     if (changes >= 0) {

@@ -202,6 +202,58 @@ TEST(BernsteinSplit, RadiiHoldAgainstExactArithmetic) {
     }
 }
 
+// split_half, the isolation's every split, has its own kernel (sums without the halvings): its
+// pieces against exact de Casteljau at 1/2, at degrees up to 64, with coefficients and radii
+// from subnormal to past the kernel's overflow limit (those take the weighted scheme), and
+// written over its input.
+TEST(BernsteinSplit, HalvesHoldAgainstExactArithmetic) {
+    std::mt19937_64 random(23);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto within = [&](const Rational& truth, double value, double radius) {
+        return std::isfinite(value) && std::isfinite(radius) &&
+               at_most(absolute_difference(truth, exact(value)), radius);
+    };
+    const double magnitudes[] = {1.0, 1e-300, 1e-310, 1e250, 1e300};
+    for (int trial = 0; trial < 260; ++trial) {
+        BernsteinBall whole;
+        whole.degree = trial % 65;
+        const int n = whole.degree;
+        const double magnitude = magnitudes[trial % 5];
+        for (int i = 0; i <= n; ++i) {
+            whole.b[i] = unit(random) * magnitude * std::pow(10.0, 4.0 * unit(random));
+            whole.r[i] = trial % 3 == 0 ? 0.0 : std::abs(whole.b[i]) * 1e-9;
+        }
+        BernsteinBall left, right;
+        split_half(whole, left, right);
+        BernsteinBall over_left = whole, other_right;
+        split_half(over_left, over_left, other_right);
+        std::vector<Rational> row(static_cast<std::size_t>(n + 1));
+        for (int i = 0; i <= n; ++i) {
+            row[static_cast<std::size_t>(i)] = exact(whole.b[i]);
+        }
+        for (int level = 0; level <= n; ++level) {
+            if (level > 0) {
+                for (int i = 0; i <= n - level; ++i) {
+                    const auto k = static_cast<std::size_t>(i);
+                    fmpq_add(row[k].get(), row[k].get(), row[k + 1].get());
+                    fmpq_div_2exp(row[k].get(), row[k].get(), 1);
+                }
+            }
+            // The exact pieces of the midpoints b_i: within each radius, which covers the
+            // roundings and carries the input's radii (weights summing to one).
+            EXPECT_TRUE(within(row[0], left.b[level], left.r[level]))
+                << "degree " << n << ", magnitude " << magnitude << ", left " << level;
+            EXPECT_TRUE(within(row[static_cast<std::size_t>(n - level)], right.b[n - level],
+                               right.r[n - level]))
+                << "degree " << n << ", magnitude " << magnitude << ", right " << n - level;
+            EXPECT_EQ(over_left.b[level], left.b[level]);
+            EXPECT_EQ(over_left.r[level], left.r[level]);
+        }
+        EXPECT_EQ(left.degree, n);
+        EXPECT_EQ(right.degree, n);
+    }
+}
+
 // The prepared midpoint polynomial (Horner on binomially weighted coefficients) against de
 // Casteljau's scheme, which shares nothing with it: the value, and the slope as a central
 // difference.
@@ -280,6 +332,44 @@ TEST(MostSignChanges, IsTheMostOverEveryChoiceOfTheUncertainSigns) {
             most = std::max(most, changes);
         }
         EXPECT_EQ(most_sign_changes(g), most) << "trial " << trial;
+    }
+}
+
+// The same at every degree to 64 (the unrolled counts to 12, the generic one to 62, the
+// search over choices past it), with at most two signs left uncertain.
+TEST(MostSignChanges, CountsAtEveryDegree) {
+    std::mt19937_64 random(31);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int trial = 0; trial < 650; ++trial) {
+        BernsteinBall g;
+        g.degree = trial % 65;
+        const int n = g.degree;
+        const int hidden_count = trial % 3;  // 0, 1 or 2 uncertain coefficients
+        std::vector<int> signs;
+        for (int i = 0; i <= n; ++i) {
+            g.b[i] = unit(random);
+            g.r[i] = 0.5 * std::abs(g.b[i]);
+            signs.push_back(g.b[i] > 0.0 ? 1 : -1);
+        }
+        std::vector<int> hidden;
+        for (int h = 0; h < hidden_count; ++h) {
+            const int at = static_cast<int>(random() % static_cast<unsigned>(n + 1));
+            g.r[at] = 2.0 * std::abs(g.b[at]) + 0.1;
+            hidden.push_back(at);
+        }
+        int most = 0;
+        for (unsigned choice = 0; choice < 4u; ++choice) {
+            std::vector<int> chosen = signs;
+            for (std::size_t h = 0; h < hidden.size(); ++h) {
+                chosen[static_cast<std::size_t>(hidden[h])] = (choice >> h) & 1u ? 1 : -1;
+            }
+            int changes = 0;
+            for (std::size_t i = 1; i < chosen.size(); ++i) {
+                changes += chosen[i] != chosen[i - 1] ? 1 : 0;
+            }
+            most = std::max(most, changes);
+        }
+        EXPECT_EQ(most_sign_changes(g), most) << "degree " << n << ", trial " << trial;
     }
 }
 
