@@ -330,6 +330,7 @@ Bracket narrow_root(const BernsteinBall& piece, const MidpointPolynomial& midpoi
         };
         for (int step = 0; step < 100 && !resolved(hi - lo) && !resolved(previous_step); ++step) {
             const ValueSlope e = midpoint.at(x);
+            ++out.newton_steps;
             slope = e.slope;
             if (e.value == 0.0) {
                 break;
@@ -340,6 +341,17 @@ Bracket narrow_root(const BernsteinBall& piece, const MidpointPolynomial& midpoi
                 hi = x;
             }
             double next = x - e.value / e.slope;
+            // A Newton step already below the resolution: x is the estimate. Without this, a
+            // value that rounding gives the wrong sign at the root (±1e-16) made the next step
+            // leave the bracket it had just closed on x, and bisection threw the estimate back
+            // to the middle of the bracket: 13 % of the Whitney umbrella's roots took 14 to
+            // 100 steps instead of 4–5.
+            if (resolved(std::abs(next - x))) {
+                if (next > lo && next < hi) {
+                    x = next;
+                }
+                break;
+            }
             if (!(next > lo && next < hi) || std::abs(next - x) > 0.5 * previous_step) {
                 next = 0.5 * (lo + hi);
             }
