@@ -404,6 +404,24 @@ BallValue evaluate(const BernsteinBall& g, double sigma) {
 
 MidpointPolynomial::MidpointPolynomial(const BernsteinBall& g) : degree_(g.degree) {
     const int n = degree_;
+    double largest = 0.0, radius = 0.0;
+    for (int i = 0; i <= n; ++i) {
+        largest = std::max(largest, std::abs(g.b[i]));
+        radius = std::max(radius, g.r[i]);
+    }
+    // at() forms each term b_i·C(n, i)·σ^i·s^(n−i) (s = fl(1 − σ)) in at most 3n + 8 roundings
+    // (the binomial past 2^53 and the product with it, s's own and the n − i products of the
+    // power, the product with the weight, the i products by σ and the i + 1 sums), so the
+    // value is within γ_{3n+8}·Σ|b_i|·B_i(σ) ≤ γ_{3n+8}·max|b_i| of the midpoint polynomial's.
+    // A power of s that underflows loses at most 2^-1074 absolute, times a weight below
+    // 2^62·max|b_i|, in each of the (n + 1)(3n + 8) < 2^14 roundings: 2^-990·max|b_i| covers it.
+    const double rounding = gamma(3 * n + 8);
+    radius_ = (radius + rounding * largest * (1.0 + 2.0 * rounding) + 0x1.0p-990 * largest) *
+                  (1.0 + 2.0 * rounding) +
+              kUnderflow;
+    if (!std::isfinite(radius_) || !std::isfinite(largest)) {
+        radius_ = INFINITY;
+    }
     if (n <= 0) {
         value_[0] = n == 0 ? g.b[0] : 0.0;
         return;
@@ -441,6 +459,32 @@ ValueSlope MidpointPolynomial::at(double sigma) const {
     value = value * sigma + value_[0] * power;
     out.value = value;
     out.slope = n * slope;
+    return out;
+}
+
+BallValue MidpointPolynomial::enclose(double sigma) const {
+    const int n = degree_;
+    BallValue out;
+    out.radius = radius_;
+    if (n < 0) {
+        out.radius = 0.0;  // the zero polynomial
+        return out;
+    }
+    if (n == 0) {
+        out.value = value_[0];
+        return out;
+    }
+    // at()'s value alone, in the same operations.
+    const double s = 1.0 - sigma;
+    double value = value_[n], power = 1.0;
+    for (int i = n - 1; i >= 0; --i) {
+        power *= s;
+        value = value * sigma + value_[i] * power;
+    }
+    out.value = value;
+    if (!std::isfinite(value) || !(sigma >= 0.0 && sigma <= 1.0)) {
+        out.radius = INFINITY;
+    }
     return out;
 }
 

@@ -69,9 +69,15 @@ class MidpointPolynomial {
     explicit MidpointPolynomial(const BernsteinBall& g);
     // For σ ∈ [0, 1]; the slope is within SlopeBounds::point_error of the exact polynomial's.
     ValueSlope at(double sigma) const;
+    // The exact polynomial's value at σ ∈ [0, 1] with a rigorous radius, in O(n) where
+    // evaluate() takes O(n²): the radius is the ball's largest (Σ r_i·B_i(σ) ≤ max r_i) and the
+    // roundings of at() (Higham's γ on every term, whose weights sum to one), the same for every
+    // σ. evaluate()'s is smaller where the radii differ from coefficient to coefficient.
+    BallValue enclose(double sigma) const;
 
   private:
     int degree_;
+    double radius_ = INFINITY;                  // enclose()'s, for every σ
     std::array<double, kMaxDegree + 1> value_;  // b_i·C(n, i)
     std::array<double, kMaxDegree + 1> slope_;  // (b_{i+1} − b_i)·C(n − 1, i)
 };

@@ -299,7 +299,7 @@ Bracket narrow_root(const BernsteinBall& piece, const MidpointPolynomial& midpoi
     double a = 0.0, b = 1.0;  // G(a) has sign_at_zero, G(b) the opposite, both certified
     const auto sign_at = [&](double p) {
         ++out.work;
-        return evaluate(piece, p).sign();
+        return midpoint.enclose(p).sign();  // O(n); evaluate() is O(n²)
     };
     // The root of the midpoint polynomial by safeguarded Newton (a Newton step that leaves the
     // bracket of the midpoint polynomial's own signs, or does not halve it, is replaced by
