@@ -174,11 +174,23 @@ namespace {
 // piece each row's last (in reverse order). For a degree known at compile time (`Fixed` ≥ 0)
 // the loops unroll and the row stays in registers — the subdivisions of the certified tracer
 // are most of a frame at degree ≤ 12; `Fixed` = −1 takes the degree from the ball.
+// Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is exact)
+// and three otherwise (the weight 1 − τ, the products, the sum), each at most u times an entry
+// no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are rounded as often. A
+// piece's radius is its computed radius widened by that, as it is written.
+struct PieceRadius {
+    double value_error, widen;
+    PieceRadius(int n, double tau, double largest)
+        : value_error(0.0), widen(1.0 + 2.0 * gamma(tau == 0.5 ? n + 1 : 3 * n + 3)) {
+        value_error = gamma(tau == 0.5 ? n + 1 : 3 * n + 3) * largest * widen;
+    }
+    double operator()(double r) const { return (r + value_error) * widen + kUnderflow; }
+};
+
 // Everything is read from `whole` before anything is written: the outputs may alias it.
-// Returns max|b_i|, for the rounding bound.
 template <int Fixed>
-double de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
-                    BernsteinBall& right) {
+void de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
+                  BernsteinBall& right) {
     const int n = Fixed >= 0 ? Fixed : whole.degree;
     std::array<ValueRadius, (Fixed >= 0 ? Fixed : kMaxDegree) + 1> p;
     double largest = 0.0;
@@ -187,10 +199,12 @@ double de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
         p[i] = ValueRadius{whole.b[i], whole.r[i]};
         largest = std::max(largest, std::abs(whole.b[i]));
     }
+    const PieceRadius radius(n, tau, largest);
+    left.degree = right.degree = n;
     left.b[0] = p[0][0];
-    left.r[0] = p[0][1];
+    left.r[0] = radius(p[0][1]);
     right.b[n] = p[n][0];
-    right.r[n] = p[n][1];
+    right.r[n] = radius(p[n][1]);
     // At τ = 1/2 both weights are 1/2 and the products exact: one rounding per level.
     const double keep = 1.0 - tau;
     const ValueRadius weight_keep = {keep, keep}, weight_tau = {tau, tau};
@@ -201,24 +215,9 @@ double de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
             p[i] = weight_keep * p[i] + weight_tau * p[i + 1];
         }
         left.b[level] = p[0][0];
-        left.r[level] = p[0][1];
+        left.r[level] = radius(p[0][1]);
         right.b[n - level] = p[n - level][0];
-        right.r[n - level] = p[n - level][1];
-    }
-    return largest;
-}
-
-// Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is exact)
-// and three otherwise (the weight 1 − τ, the products, the sum), each at most u times an entry
-// no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are rounded as often.
-void widen_pieces(int n, double tau, double largest, BernsteinBall& left, BernsteinBall& right) {
-    const double rounding = gamma(tau == 0.5 ? n + 1 : 3 * n + 3);
-    const double widen = 1.0 + 2.0 * rounding;
-    const double value_error = rounding * largest * widen;
-    left.degree = right.degree = n;
-    for (int i = 0; i <= n; ++i) {
-        left.r[i] = (left.r[i] + value_error) * widen + kUnderflow;
-        right.r[i] = (right.r[i] + value_error) * widen + kUnderflow;
+        right.r[n - level] = radius(p[n - level][1]);
     }
 }
 
@@ -231,7 +230,7 @@ constexpr double kHalvingLimit = 0x1.0p950;
 // with rounding), so each piece's coefficient is the sum times 2^−level, the same double as
 // before — one addition per entry where the weights cost two multiplications and an addition,
 // and one multiplication per coefficient — and each radius is widened as it is written (as
-// widen_pieces would, in the same order: the same doubles). Halving is the isolation's every
+// the τ-weighted scheme does: the same doubles). Halving is the isolation's every
 // split. Returns false, having written nothing, when an entry reaches kHalvingLimit.
 template <int Fixed>
 bool de_casteljau_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right) {
@@ -247,10 +246,7 @@ bool de_casteljau_half(const BernsteinBall& whole, BernsteinBall& left, Bernstei
     if (!(largest[0] < kHalvingLimit && largest[1] < kHalvingLimit)) {
         return false;
     }
-    const double rounding = gamma(n + 1);  // as widen_pieces at τ = 1/2
-    const double widen = 1.0 + 2.0 * rounding;
-    const double value_error = rounding * largest[0] * widen;
-    const auto radius = [&](double r) { return (r + value_error) * widen + kUnderflow; };
+    const PieceRadius radius(n, 0.5, largest[0]);
     left.degree = right.degree = n;
     left.b[0] = p[0][0];
     left.r[0] = radius(p[0][1]);
@@ -330,49 +326,47 @@ void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, Berns
         left.degree = right.degree = n;
         return;
     }
-    double largest = 0.0;
     switch (n) {
     case 1:
-        largest = de_casteljau<1>(whole, tau, left, right);
+        de_casteljau<1>(whole, tau, left, right);
         break;
     case 2:
-        largest = de_casteljau<2>(whole, tau, left, right);
+        de_casteljau<2>(whole, tau, left, right);
         break;
     case 3:
-        largest = de_casteljau<3>(whole, tau, left, right);
+        de_casteljau<3>(whole, tau, left, right);
         break;
     case 4:
-        largest = de_casteljau<4>(whole, tau, left, right);
+        de_casteljau<4>(whole, tau, left, right);
         break;
     case 5:
-        largest = de_casteljau<5>(whole, tau, left, right);
+        de_casteljau<5>(whole, tau, left, right);
         break;
     case 6:
-        largest = de_casteljau<6>(whole, tau, left, right);
+        de_casteljau<6>(whole, tau, left, right);
         break;
     case 7:
-        largest = de_casteljau<7>(whole, tau, left, right);
+        de_casteljau<7>(whole, tau, left, right);
         break;
     case 8:
-        largest = de_casteljau<8>(whole, tau, left, right);
+        de_casteljau<8>(whole, tau, left, right);
         break;
     case 9:
-        largest = de_casteljau<9>(whole, tau, left, right);
+        de_casteljau<9>(whole, tau, left, right);
         break;
     case 10:
-        largest = de_casteljau<10>(whole, tau, left, right);
+        de_casteljau<10>(whole, tau, left, right);
         break;
     case 11:
-        largest = de_casteljau<11>(whole, tau, left, right);
+        de_casteljau<11>(whole, tau, left, right);
         break;
     case 12:
-        largest = de_casteljau<12>(whole, tau, left, right);
+        de_casteljau<12>(whole, tau, left, right);
         break;
     default:
-        largest = de_casteljau<-1>(whole, tau, left, right);
+        de_casteljau<-1>(whole, tau, left, right);
         break;
     }
-    widen_pieces(n, tau, largest, left, right);
 }
 
 BallValue evaluate(const BernsteinBall& g, double sigma) {
