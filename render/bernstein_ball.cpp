@@ -221,8 +221,9 @@ void de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
     }
 }
 
-// Entries at or past this make the sums of de_casteljau_half overflow at degree 64 (2^957·2^64
-// < 2^1024): such balls take the weighted scheme, whose entries never grow.
+// A safe limit for de_casteljau_half's sums: entries below it stay below 2^950·2^64·(1 + u)^64
+// < 2^1024 at degree 64. Balls with larger entries take the weighted scheme, whose entries never
+// grow.
 constexpr double kHalvingLimit = 0x1.0p950;
 
 // De Casteljau at τ = 1/2 without the halvings: the row's sums p_i + p_{i+1} are 2^level times
@@ -398,22 +399,28 @@ BallValue evaluate(const BernsteinBall& g, double sigma) {
 
 MidpointPolynomial::MidpointPolynomial(const BernsteinBall& g) : degree_(g.degree) {
     const int n = degree_;
+    // The largest |b_i| and r_i; a coefficient or radius that is not finite (std::max would
+    // skip a NaN) makes the radius infinite below.
     double largest = 0.0, radius = 0.0;
+    bool finite = true;
     for (int i = 0; i <= n; ++i) {
+        finite = finite && std::isfinite(g.b[i]) && std::isfinite(g.r[i]);
         largest = std::max(largest, std::abs(g.b[i]));
         radius = std::max(radius, g.r[i]);
     }
-    // at() forms each term b_i·C(n, i)·σ^i·s^(n−i) (s = fl(1 − σ)) in at most 3n + 8 roundings
-    // (the binomial past 2^53 and the product with it, s's own and the n − i products of the
-    // power, the product with the weight, the i products by σ and the i + 1 sums), so the
-    // value is within γ_{3n+8}·Σ|b_i|·B_i(σ) ≤ γ_{3n+8}·max|b_i| of the midpoint polynomial's.
-    // A power of s that underflows loses at most 2^-1074 absolute, times a weight below
-    // 2^62·max|b_i|, in each of the (n + 1)(3n + 8) < 2^14 roundings: 2^-990·max|b_i| covers it.
+    // at() forms each term b_i·C(n, i)·σ^i·s^(n−i) (s = fl(1 − σ) = (1 − σ)(1 + δ)) in at most
+    // 2n + 3 roundings: the binomial past 2^53 and the product with it, δ once for each of the
+    // n − i factors s, the n − i − 1 products of the power (the first, 1·s, is exact), the
+    // product with the weight, the i products by σ and the i + 1 sums. Against the exact
+    // weights, which sum to one, the value is within γ_{2n+3}·Σ|b_i|·B_i(σ) ≤ γ_{3n+8}·max|b_i|
+    // of the midpoint polynomial's (γ_{3n+8}: room to spare). A product that underflows loses at
+    // most 2^-1075 absolute: in the powers, times a weight below 2^62·max|b_i|, over the terms
+    // about 2^-1005·max|b_i|, which 2^-990·max|b_i| covers; elsewhere kUnderflow.
     const double rounding = gamma(3 * n + 8);
     radius_ = (radius + rounding * largest * (1.0 + 2.0 * rounding) + 0x1.0p-990 * largest) *
                   (1.0 + 2.0 * rounding) +
               kUnderflow;
-    if (!std::isfinite(radius_) || !std::isfinite(largest)) {
+    if (!finite || !std::isfinite(radius_)) {
         radius_ = INFINITY;
     }
     if (n <= 0) {

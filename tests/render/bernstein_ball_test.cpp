@@ -320,6 +320,26 @@ TEST(MidpointPolynomial, EnclosesTheExactValue) {
     }
 }
 
+// A radius or coefficient that is not finite leaves no sign certain (the largest radius was
+// taken with std::max, which skips a NaN).
+TEST(MidpointPolynomial, EnclosesNothingWithARadiusThatIsNotFinite) {
+    for (const double bad : {NAN, INFINITY}) {
+        for (int at = 0; at <= 4; ++at) {
+            BernsteinBall g;
+            g.degree = 4;
+            for (int i = 0; i <= 4; ++i) {
+                g.b[i] = 1.0 + i;
+                g.r[i] = 1e-12;
+            }
+            g.r[at] = bad;
+            EXPECT_EQ(MidpointPolynomial(g).enclose(0.5).sign(), 0) << "radius " << at;
+            g.r[at] = 1e-12;
+            g.b[at] = bad;
+            EXPECT_EQ(MidpointPolynomial(g).enclose(0.5).sign(), 0) << "coefficient " << at;
+        }
+    }
+}
+
 // Descartes' bound under uncertainty against brute force: every choice of signs (±1) for the
 // coefficients the ball leaves uncertain, counting the changes of each.
 TEST(MostSignChanges, IsTheMostOverEveryChoiceOfTheUncertainSigns) {
