@@ -6,6 +6,8 @@
 #include <mutex>
 #include <vector>
 
+#include "render/detail/fixed_degree.h"
+
 namespace locus::render {
 
 namespace {
@@ -170,23 +172,27 @@ double largest_magnitude(const BernsteinBall& g) {
 
 namespace {
 
-// De Casteljau's triangle row by row: the left piece takes each row's first entry, the right
-// piece each row's last (in reverse order). For a degree known at compile time (`Fixed` ≥ 0)
-// the loops unroll and the row stays in registers — the subdivisions of the certified tracer
-// are most of a frame at degree ≤ 12; `Fixed` = −1 takes the degree from the ball.
 // Every entry is reached by at most one rounding per level at τ = 1/2 (the halving is exact)
 // and three otherwise (the weight 1 − τ, the products, the sum), each at most u times an entry
 // no larger than (1 + u)^(3·level)·max|b_i|; the radii, all positive, are rounded as often. A
 // piece's radius is its computed radius widened by that, as it is written.
-struct PieceRadius {
-    double value_error, widen;
-    PieceRadius(int n, double tau, double largest)
-        : value_error(0.0), widen(1.0 + 2.0 * gamma(tau == 0.5 ? n + 1 : 3 * n + 3)) {
-        value_error = gamma(tau == 0.5 ? n + 1 : 3 * n + 3) * largest * widen;
+class PieceRadius {
+  public:
+    PieceRadius(int n, double tau, double largest) {
+        const double rounding = gamma(tau == 0.5 ? n + 1 : 3 * n + 3);
+        widen_ = 1.0 + 2.0 * rounding;
+        value_error_ = rounding * largest * widen_;
     }
-    double operator()(double r) const { return (r + value_error) * widen + kUnderflow; }
+    double operator()(double r) const { return (r + value_error_) * widen_ + kUnderflow; }
+
+  private:
+    double value_error_ = 0.0, widen_ = 1.0;
 };
 
+// De Casteljau's triangle row by row: the left piece takes each row's first entry, the right
+// piece each row's last (in reverse order). For a degree known at compile time (`Fixed` ≥ 0)
+// the loops unroll and the row stays in registers — the subdivisions of the certified tracer
+// are most of a frame at degree ≤ 12; `Fixed` = −1 takes the degree from the ball.
 // Everything is read from `whole` before anything is written: the outputs may alias it.
 template <int Fixed>
 void de_casteljau(const BernsteinBall& whole, double tau, BernsteinBall& left,
@@ -274,100 +280,23 @@ bool de_casteljau_half(const BernsteinBall& whole, BernsteinBall& left, Bernstei
 }  // namespace
 
 void split_half(const BernsteinBall& whole, BernsteinBall& left, BernsteinBall& right) {
-    bool done = false;
-    switch (whole.degree) {
-    case 1:
-        done = de_casteljau_half<1>(whole, left, right);
-        break;
-    case 2:
-        done = de_casteljau_half<2>(whole, left, right);
-        break;
-    case 3:
-        done = de_casteljau_half<3>(whole, left, right);
-        break;
-    case 4:
-        done = de_casteljau_half<4>(whole, left, right);
-        break;
-    case 5:
-        done = de_casteljau_half<5>(whole, left, right);
-        break;
-    case 6:
-        done = de_casteljau_half<6>(whole, left, right);
-        break;
-    case 7:
-        done = de_casteljau_half<7>(whole, left, right);
-        break;
-    case 8:
-        done = de_casteljau_half<8>(whole, left, right);
-        break;
-    case 9:
-        done = de_casteljau_half<9>(whole, left, right);
-        break;
-    case 10:
-        done = de_casteljau_half<10>(whole, left, right);
-        break;
-    case 11:
-        done = de_casteljau_half<11>(whole, left, right);
-        break;
-    case 12:
-        done = de_casteljau_half<12>(whole, left, right);
-        break;
-    default:
-        done = whole.degree > 0 && de_casteljau_half<-1>(whole, left, right);
-        break;
-    }
+    const bool done = whole.degree >= 0 && detail::with_fixed_degree(whole.degree, [&](auto fixed) {
+                          return de_casteljau_half<decltype(fixed)::value>(whole, left, right);
+                      });
     if (!done) {
-        split_at(whole, 0.5, left, right);  // degree ≤ 0, or entries that the sums would overflow
+        split_at(whole, 0.5, left,
+                 right);  // the zero polynomial, or entries the sums would overflow
     }
 }
 
 void split_at(const BernsteinBall& whole, double tau, BernsteinBall& left, BernsteinBall& right) {
-    const int n = whole.degree;
-    if (n < 0) {
-        left.degree = right.degree = n;
+    if (whole.degree < 0) {
+        left.degree = right.degree = whole.degree;
         return;
     }
-    switch (n) {
-    case 1:
-        de_casteljau<1>(whole, tau, left, right);
-        break;
-    case 2:
-        de_casteljau<2>(whole, tau, left, right);
-        break;
-    case 3:
-        de_casteljau<3>(whole, tau, left, right);
-        break;
-    case 4:
-        de_casteljau<4>(whole, tau, left, right);
-        break;
-    case 5:
-        de_casteljau<5>(whole, tau, left, right);
-        break;
-    case 6:
-        de_casteljau<6>(whole, tau, left, right);
-        break;
-    case 7:
-        de_casteljau<7>(whole, tau, left, right);
-        break;
-    case 8:
-        de_casteljau<8>(whole, tau, left, right);
-        break;
-    case 9:
-        de_casteljau<9>(whole, tau, left, right);
-        break;
-    case 10:
-        de_casteljau<10>(whole, tau, left, right);
-        break;
-    case 11:
-        de_casteljau<11>(whole, tau, left, right);
-        break;
-    case 12:
-        de_casteljau<12>(whole, tau, left, right);
-        break;
-    default:
-        de_casteljau<-1>(whole, tau, left, right);
-        break;
-    }
+    detail::with_fixed_degree(whole.degree, [&](auto fixed) {
+        de_casteljau<decltype(fixed)::value>(whole, tau, left, right);
+    });
 }
 
 BallValue evaluate(const BernsteinBall& g, double sigma) {

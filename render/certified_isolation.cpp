@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "render/detail/fixed_degree.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -60,55 +62,13 @@ int certain_sign_changes(const BernsteinBall& g) {
 
 int most_sign_changes(const BernsteinBall& g) {
     // Most pieces have every sign certain: the changes are then counted as they are.
-    int changes = -1;
-    switch (g.degree) {
-    case -1:
-        break;  // the zero polynomial, below
-    case 0:
-        changes = certain_sign_changes<0>(g);
-        break;
-    case 1:
-        changes = certain_sign_changes<1>(g);
-        break;
-    case 2:
-        changes = certain_sign_changes<2>(g);
-        break;
-    case 3:
-        changes = certain_sign_changes<3>(g);
-        break;
-    case 4:
-        changes = certain_sign_changes<4>(g);
-        break;
-    case 5:
-        changes = certain_sign_changes<5>(g);
-        break;
-    case 6:
-        changes = certain_sign_changes<6>(g);
-        break;
-    case 7:
-        changes = certain_sign_changes<7>(g);
-        break;
-    case 8:
-        changes = certain_sign_changes<8>(g);
-        break;
-    case 9:
-        changes = certain_sign_changes<9>(g);
-        break;
-    case 10:
-        changes = certain_sign_changes<10>(g);
-        break;
-    case 11:
-        changes = certain_sign_changes<11>(g);
-        break;
-    case 12:
-        changes = certain_sign_changes<12>(g);
-        break;
-    default:
-        if (g.degree <= 62) {
-            changes = certain_sign_changes<-1>(g);
-        }
-        break;
-    }
+    // (Degree −1, the zero polynomial, and degrees past the masks' 62 take the search below.)
+    const int changes =
+        g.degree >= 0 && g.degree <= 62
+            ? detail::with_fixed_degree(
+                  g.degree,
+                  [&](auto fixed) { return certain_sign_changes<decltype(fixed)::value>(g); })
+            : -1;
     if (changes >= 0) {
         return changes;
     }

@@ -73,7 +73,7 @@ int most_sign_changes(const BernsteinBall& g);
 struct Bracket {
     double lo = 0.0, hi = 1.0;
     bool certified = false;
-    int work = 0;           // certified evaluations (evaluate)
+    int work = 0;           // certified evaluations (MidpointPolynomial::enclose)
     int newton_steps = 0;   // evaluations of the midpoint polynomial that placed the estimate
     double estimate = 0.5;  // the root as the midpoint polynomial places it, in [lo, hi]
     double slope = 0.0;     // the midpoint polynomial's slope there (per unit of σ)
