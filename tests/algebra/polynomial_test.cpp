@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
 #include "algebra/parse.h"
@@ -138,6 +140,35 @@ TEST(FlintConvert, GcdFactorAndSquareFreePart) {
     }
     EXPECT_EQ(product, Rational(3) * sphere.pow(2) * plane);
     EXPECT_EQ(square_free_part(sphere.pow(2) * plane.pow(3)), (sphere * plane).primitive_part());
+}
+
+// The product of the distinct factors of FLINT's full factorization, primitive: what
+// square_free_part (FLINT's square-free factorization, a different algorithm) must return.
+Polynomial distinct_factors(const Polynomial& f) {
+    Polynomial product = Polynomial::constant(f.ring(), Rational(1));
+    for (const auto& [p, k] : factor(f).factors) {
+        product *= p;
+    }
+    return product.primitive_part();
+}
+
+TEST(FlintConvert, SquareFreePartAgreesWithTheFullFactorization) {
+    for (int seed = 0; seed < test::seed_count(150); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(seed);
+        const RingPtr ring = ring_for_seed(seed);
+        Polynomial f = Polynomial::constant(ring, Rational(1 + seed % 4));
+        for (int piece = 0; piece < 1 + seed % 3; ++piece) {
+            const Polynomial g = test::random_polynomial(ring, rng, 1 + seed % 4, 2);
+            if (!g.is_zero()) {
+                f *= g.pow(1 + static_cast<unsigned>(rng() % 3));
+            }
+        }
+        if (f.is_constant()) {
+            continue;
+        }
+        EXPECT_EQ(square_free_part(f), distinct_factors(f));
+    }
 }
 
 }  // namespace
