@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
+#include <new>
 #include <type_traits>
 
 #include "algebra/double_double.h"
@@ -85,6 +87,21 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
 
 namespace {
 constexpr double kUnit = 0x1.0p-53;
+
+// Storage for N values of T left uninitialized, for tables whose every entry is written before
+// it is read: T may have default member initializers (DoubleDouble has), which would otherwise
+// zero all N at every construction. T must be trivially copyable and destructible, so that
+// assigning to an entry creates it.
+template <class T, std::size_t N>
+class UninitializedArray {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+
+  public:
+    T* data() { return std::launder(reinterpret_cast<T*>(storage_)); }
+
+  private:
+    alignas(T) std::byte storage_[N * sizeof(T)];
+};
 
 // The scalars of LineRestrictor::expand. `Plain` is a double. `Ball` is a double with a bound
 // on its error, propagated by the running error analysis of each operation (midpoint-radius
@@ -336,17 +353,23 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
         return;
     }
     // Powers (o + t·d)^k for k ≤ max exponent as coefficient rows: row k has k + 1
-    // coefficients, row[j] = previous[j]·o + previous[j − 1]·d.
-    using PowerTable = std::array<std::array<Scalar, kMaxDegree + 1>, kMaxDegree + 1>;
+    // coefficients, row[j] = previous[j]·o + previous[j − 1]·d. Packed, row k from k(k + 1)/2
+    // on, and left uninitialized (every entry read is written first): square tables for the
+    // largest degree, zeroed, took a 300 KB stack frame of which each thread faulted in the
+    // pages on its first double-double restriction (a hundred page faults of a 512² frame, at
+    // 5–12 µs each on this project's machines), and zeroed 200 KB at every call.
+    using PowerTable = UninitializedArray<Scalar, (kMaxDegree + 1) * (kMaxDegree + 2) / 2>;
     PowerTable powers[3];
+    const auto row_of = [&powers](int axis, int k) {
+        return powers[axis].data() + static_cast<std::size_t>(k) * (k + 1) / 2;
+    };
     for (int axis = 0; axis < 3; ++axis) {
         const Scalar& o = origin[static_cast<std::size_t>(axis)];
         const Scalar& d = direction[static_cast<std::size_t>(axis)];
-        PowerTable& table = powers[axis];
-        table[0][0] = Scalar::one();
+        row_of(axis, 0)[0] = Scalar::one();
         for (int k = 1; k <= table_exponent_[static_cast<std::size_t>(axis)]; ++k) {
-            const auto& previous = table[k - 1];
-            auto& row = table[k];
+            const Scalar* previous = row_of(axis, k - 1);
+            Scalar* row = row_of(axis, k);
             row[0] = previous[0] * o;
             for (int j = 1; j < k; ++j) {
                 row[j] = Scalar::sum_of_products(previous[j], o, previous[j - 1], d);
@@ -354,27 +377,26 @@ void LineRestrictor::expand(const std::array<Scalar, 3>& origin,
             row[k] = previous[k - 1] * d;
         }
     }
-    const PowerTable &xs = powers[0], &ys = powers[1], &zs = powers[2];
     std::array<Scalar, kMaxDegree + 1> in_z, in_yz;
     for (const XGroup& x_group : x_groups_) {
         std::fill_n(in_yz.begin(), x_group.max_yz + 1, Scalar::zero());
         for (const YGroup& y_group : x_group.y_groups) {
             std::fill_n(in_z.begin(), y_group.max_ez + 1, Scalar::zero());
             for (const ZTerm& z : y_group.z_terms) {
-                const auto& power = zs[z.ez];
+                const Scalar* power = row_of(2, z.ez);
                 const Scalar c = coefficient(z);
                 for (int j = 0; j <= z.ez; ++j) {
                     Scalar::multiply_add(in_z[j], c, power[j]);
                 }
             }
-            const auto& y_power = ys[y_group.ey];
+            const Scalar* y_power = row_of(1, y_group.ey);
             for (int i = 0; i <= y_group.ey; ++i) {
                 for (int j = 0; j <= y_group.max_ez; ++j) {
                     Scalar::multiply_add(in_yz[i + j], y_power[i], in_z[j]);
                 }
             }
         }
-        const auto& x_power = xs[x_group.ex];
+        const Scalar* x_power = row_of(0, x_group.ex);
         for (int i = 0; i <= x_group.ex; ++i) {
             for (int j = 0; j <= x_group.max_yz; ++j) {
                 Scalar::multiply_add(result[i + j], x_power[i], in_yz[j]);
