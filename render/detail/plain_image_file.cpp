@@ -65,20 +65,32 @@ bool is_plain_image_format(const std::string& path) {
 
 std::string write_plain_image(const std::string& path, int width, int height,
                               const RgbRowSource& row) {
-    // A PNG is encoded whole before the file is opened: the bands are compressed in parallel,
-    // and a PNG of a frame is small (50–100 KB at 512²).
-    const bool png = lowercase_extension(path) == ".png";
-    const std::string encoded = png ? encode_png(width, height, row) : std::string();
     errno = 0;
-    File file(std::fopen(path.c_str(), "wb"));
-    if (!file) {
-        return std::strerror(errno);
-    }
-    if (png) {
-        if (!write_all(file.get(), encoded.data(), encoded.size())) {
-            return std::strerror(errno);
+    File file;
+    if (lowercase_extension(path) == ".png") {
+        // Written as the pieces come. The bands are compressed before the first piece, and the
+        // file is opened at it: an encoding that fails (zlib out of memory) leaves no file.
+        std::string failure;
+        encode_png(width, height, row, [&](const char* data, std::size_t size) {
+            if (!file && failure.empty()) {
+                errno = 0;
+                file.reset(std::fopen(path.c_str(), "wb"));
+                if (!file) {
+                    failure = std::strerror(errno);
+                }
+            }
+            if (failure.empty() && !write_all(file.get(), data, size)) {
+                failure = std::strerror(errno);
+            }
+        });
+        if (!failure.empty()) {
+            return failure;
         }
     } else {
+        file.reset(std::fopen(path.c_str(), "wb"));
+        if (!file) {
+            return std::strerror(errno);
+        }
         const std::string failure = write_ppm(file.get(), width, height, row);
         if (!failure.empty()) {
             return failure;

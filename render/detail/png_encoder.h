@@ -6,6 +6,7 @@
 // band by band, on the same threads, without a frame-sized buffer of codes.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,5 +20,11 @@ using RgbRowSource = std::function<void(int y, std::uint8_t* rgb)>;
 // The PNG file of a width×height image (both positive), 8-bit truecolour, not interlaced. Throws
 // std::bad_alloc when zlib cannot allocate its state.
 std::string encode_png(int width, int height, const RgbRowSource& row);
+
+// Receives a file's bytes, piece by piece, in order.
+using PngSink = std::function<void(const char* data, std::size_t size)>;
+// The same file handed to `put` in pieces (its bands as they were deflated), without a copy of
+// the whole.
+void encode_png(int width, int height, const RgbRowSource& row, const PngSink& put);
 
 }  // namespace locus::render::detail
