@@ -1,4 +1,4 @@
-// Writing rendered images: PNG and PPM directly (zlib, in parallel), every other format with
+// Writing rendered images: PNG and PPM directly (ISA-L, in parallel), every other format with
 // OpenImageIO, loaded only then. The colour image goes to `path` in the format its
 // extension names: 8-bit sRGB for PNG/JPEG/TIFF and the like, linear half floats for EXR.
 // Requested AOVs go beside it as EXR files named <stem>.<aov>.exr (depth: one channel, the

@@ -18,7 +18,7 @@ namespace locus::render::detail {
 using RgbRowSource = std::function<void(int y, std::uint8_t* rgb)>;
 
 // The PNG file of a width×height image (both positive), 8-bit truecolour, not interlaced. Throws
-// std::bad_alloc when zlib cannot allocate its state.
+// std::bad_alloc when the compressor's state cannot be allocated.
 std::string encode_png(int width, int height, const RgbRowSource& row);
 
 // Receives a file's bytes, piece by piece, in order.
