@@ -305,8 +305,12 @@ int run_render(const RenderArgs& args, ProgressLine& progress) {
     execution.deadline = deadline;
     // oneTBB starts on first use: it loads its allocator library, maps its pools and starts its
     // worker threads, about a millisecond and a hundred page faults. Started here on another
-    // thread, that overlaps reading and compiling the scene on this one (joined on return).
-    const std::jthread start_tbb([] { tbb::parallel_for(0, 2, [](int) {}); });
+    // thread, that overlaps reading and compiling the scene on this one (joined on return), as
+    // does loading the image writer's library (ISA-L for PNG).
+    const std::jthread start_tbb([output = args.output] {
+        tbb::parallel_for(0, 2, [](int) {});
+        render::prepare_image_writer(output);
+    });
     render::Scene scene;
     std::vector<render::Aov> aovs;
     try {

@@ -24,9 +24,9 @@ pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 find_package(tomlplusplus CONFIG REQUIRED)
 # The web server of `locus view` (view/).
 pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
-# PNG without OpenImageIO (render/detail/png_encoder.cpp): ISA-L's igzip deflates, zlib gives
-# the checksums.
-pkg_check_modules(ISAL REQUIRED IMPORTED_TARGET libisal)
+# PNG without OpenImageIO (render/detail/png_encoder.cpp): ISA-L's igzip deflates (its headers
+# here; the library is loaded with dlopen on the first PNG), zlib gives the checksums.
+pkg_check_modules(ISAL REQUIRED libisal)
 find_package(ZLIB REQUIRED)
 if(LOCUS_BUILD_TESTS)
     # A PNG decoder that shares no code with the encoder (tests/render/png_encoder_test.cpp).

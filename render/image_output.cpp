@@ -149,6 +149,12 @@ Aov parse_aov(const std::string& name) {
     throw InputError("aov '" + name + "'", "unknown output; expected depth, normal or work");
 }
 
+void prepare_image_writer(const std::string& path) {
+    if (detail::lowercase_extension(path) == ".png") {
+        detail::prepare_png_encoder();
+    }
+}
+
 std::vector<std::string> write_image(const RenderedImage& image, const std::string& path,
                                      const std::vector<Aov>& aovs) {
     if (!aovs.empty() && image.depth.empty()) {

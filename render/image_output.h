@@ -24,6 +24,10 @@ void check_image_path(const std::string& path);
 // Where an image is written before it is complete: ".locus-partial.NAME" beside it.
 std::string partial_path(const std::string& path);
 
+// Loads what the writer of `path`'s format loads on first use (for PNG, ISA-L), for a thread
+// with nothing else to do before a frame (`locus render` calls it while it reads the scene).
+void prepare_image_writer(const std::string& path);
+
 // Throws ResourceLimit with the writer's message when a file cannot be written (nothing is
 // left under its name). Returns the paths written, the colour image first.
 std::vector<std::string> write_image(const RenderedImage& image, const std::string& path,

@@ -6,8 +6,11 @@
 #include <cstdlib>
 #include <new>
 #include <optional>
+#include <string>
 #include <vector>
 
+#include <dlfcn.h>
+#include <isa-l.h>
 #include <isa-l/igzip_lib.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -26,6 +29,13 @@ namespace {
 // filter per row five times as long again, for 20 % less): the encoding had been a tenth of
 // the whole command.
 constexpr int kLevel = 1;
+// The ISA-L library's file name (its soname, from the version of the headers compiled against),
+// for dlopen.
+#define LOCUS_STRING(x) #x
+#define LOCUS_EXPAND_STRING(x) LOCUS_STRING(x)
+constexpr const char* kIgzipLibrary = "libisal.so." LOCUS_EXPAND_STRING(ISAL_MAJOR_VERSION);
+#undef LOCUS_EXPAND_STRING
+#undef LOCUS_STRING
 constexpr std::uint8_t kSubFilter = 1;
 // The zlib header for a 32 KiB window at a fast level (RFC 1950: CMF 0x78, FLEVEL 1, and the
 // check bits that make 0x785E a multiple of 31).
@@ -40,6 +50,41 @@ struct Band {
     std::size_t bytes = 0;  // their length
 };
 
+// ISA-L, loaded with dlopen on the first PNG rather than linked: linked, loading it cost every
+// command 0.4–0.7 ms of start-up (`perf stat -r 30 locus --help`), `locus groebner` and `locus
+// trace` included, which write no PNG. Debian's libisal2 (a dependency of libisal-dev).
+struct Igzip {
+    void (*deflate_init)(isal_zstream*);
+    int (*deflate)(isal_zstream*);
+    std::uint32_t (*adler32)(std::uint32_t, const unsigned char*, std::uint64_t);
+};
+
+const Igzip& igzip() {
+    static const Igzip loaded = [] {
+        void* library = dlopen(kIgzipLibrary, RTLD_NOW | RTLD_LOCAL);
+        if (library == nullptr) {
+            throw Error(std::string("cannot load ISA-L for writing PNG (") + kIgzipLibrary +
+                        ", Debian package libisal2): " + dlerror());
+        }
+        const auto symbol = [library](const char* name) {
+            void* address = dlsym(library, name);
+            if (address == nullptr) {
+                throw Error(std::string(kIgzipLibrary) + " lacks " + name);
+            }
+            return address;
+        };
+        Igzip functions{};
+        functions.deflate_init =
+            reinterpret_cast<void (*)(isal_zstream*)>(symbol("isal_deflate_init"));
+        functions.deflate = reinterpret_cast<int (*)(isal_zstream*)>(symbol("isal_deflate"));
+        functions.adler32 =
+            reinterpret_cast<std::uint32_t (*)(std::uint32_t, const unsigned char*, std::uint64_t)>(
+                symbol("isal_adler32"));
+        return functions;
+    }();
+    return loaded;
+}
+
 // igzip's state for one stream (82 KB) and its level's buffer (hash table and tokens) in one
 // block. The small buffer (84 KB) compresses a 512² frame as well and as fast as the default
 // (276 KB) within 0.2 %, and in ordinary pages the block costs a whole command no more than
@@ -53,7 +98,7 @@ class DeflateStream {
 
     // Ready for a new raw deflate stream (no zlib header or checksum of its own).
     void reset() {
-        isal_deflate_init(stream_);
+        igzip().deflate_init(stream_);
         stream_->level = kLevel;
         stream_->level_buf = block_.data() + kLevelBufferOffset;
         stream_->level_buf_size = ISAL_DEF_LVL1_SMALL;
@@ -76,7 +121,7 @@ class DeflateStream {
             }
             stream_->next_out = reinterpret_cast<std::uint8_t*>(out.data()) + stream_->total_out;
             stream_->avail_out = static_cast<std::uint32_t>(out.size() - stream_->total_out);
-            if (isal_deflate(stream_) != COMP_OK) {
+            if (igzip().deflate(stream_) != COMP_OK) {
                 throw Error("igzip deflate failed");
             }
         } while (stream_->avail_out == 0);
@@ -128,8 +173,8 @@ Band deflate_band(int width, int first, int last, bool final, const RgbRowSource
         for (std::size_t i = 3; i < row_bytes; ++i) {
             filtered[i + 1] = static_cast<std::uint8_t>(rgb[i] - rgb[i - 3]);
         }
-        band.adler =
-            isal_adler32(static_cast<std::uint32_t>(band.adler), filtered.data(), filtered.size());
+        band.adler = igzip().adler32(static_cast<std::uint32_t>(band.adler), filtered.data(),
+                                     filtered.size());
         band.bytes += filtered.size();
         const bool band_ends = y + 1 == last;
         stream.run(filtered.data(), filtered.size(), band_ends && !final, band_ends && final,
@@ -236,6 +281,15 @@ std::string encode_png(int width, int height, const RgbRowSource& row) {
 
 void encode_png(int width, int height, const RgbRowSource& row, const PngSink& put) {
     emit_png(width, height, deflate_bands(width, height, row), put);
+}
+
+bool prepare_png_encoder() {
+    try {
+        igzip();
+        return true;
+    } catch (const Error&) {
+        return false;  // the first encoding reports it
+    }
 }
 
 }  // namespace locus::render::detail

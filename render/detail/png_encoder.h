@@ -18,7 +18,8 @@ namespace locus::render::detail {
 using RgbRowSource = std::function<void(int y, std::uint8_t* rgb)>;
 
 // The PNG file of a width×height image (both positive), 8-bit truecolour, not interlaced. Throws
-// std::bad_alloc when the compressor's state cannot be allocated.
+// std::bad_alloc when the compressor's state cannot be allocated, Error when its library (ISA-L,
+// loaded on first use) cannot be loaded.
 std::string encode_png(int width, int height, const RgbRowSource& row);
 
 // Receives a file's bytes, piece by piece, in order.
@@ -26,5 +27,9 @@ using PngSink = std::function<void(const char* data, std::size_t size)>;
 // The same file handed to `put` in pieces (its bands as they were deflated), without a copy of
 // the whole.
 void encode_png(int width, int height, const RgbRowSource& row, const PngSink& put);
+
+// Loads the compressor's library (ISA-L, loaded on first use), for a thread with nothing else
+// to do before a frame; false when it cannot be loaded (the encoding then says why).
+bool prepare_png_encoder();
 
 }  // namespace locus::render::detail
