@@ -62,14 +62,17 @@ struct Igzip {
 const Igzip& igzip() {
     static const Igzip loaded = [] {
         void* library = dlopen(kIgzipLibrary, RTLD_NOW | RTLD_LOCAL);
+        // Not there (or not usable): the picture cannot be written here, as with a full disk
+        // — a ResourceLimit (exit code 5), not the input's fault.
         if (library == nullptr) {
-            throw Error(std::string("cannot load ISA-L for writing PNG (") + kIgzipLibrary +
-                        ", Debian package libisal2): " + dlerror());
+            throw ResourceLimit(std::string("cannot write PNG: ISA-L (") + kIgzipLibrary +
+                                ", Debian package libisal2) cannot be loaded: " + dlerror());
         }
         const auto symbol = [library](const char* name) {
             void* address = dlsym(library, name);
             if (address == nullptr) {
-                throw Error(std::string(kIgzipLibrary) + " lacks " + name);
+                throw ResourceLimit(std::string("cannot write PNG: ") + kIgzipLibrary + " lacks " +
+                                    name);
             }
             return address;
         };

@@ -175,6 +175,13 @@ expect "resultant refuses space curves" 2 "plane curves" -- \
 expect "render an equation to PNG" 0 "wrote $tmp/sphere.png" -- \
     "$locus" render "x^2+y^2+z^2-1" -o "$tmp/sphere.png" --size 48x32 --samples 2 --threads 1
 expect "the PNG exists" 0 "" -- test -s "$tmp/sphere.png"
+# ISA-L is loaded on the first PNG: one that cannot be loaded is a failed write (exit 5), names
+# the package, and leaves no file.
+mkdir -p "$tmp/broken-lib" && echo "not a library" > "$tmp/broken-lib/libisal.so.2"
+expect "PNG without a loadable ISA-L: a resource limit" 5 "Debian package libisal2" -- \
+    env LD_LIBRARY_PATH="$tmp/broken-lib" "$locus" render "x^2+y^2+z^2-1" -o "$tmp/nolib.png" --size 16x16
+expect "PNG without a loadable ISA-L: nothing written" 1 "" -- \
+    bash -c "ls -a \"$tmp\" | grep -q nolib"
 # An ellipsoid with three different axes: every turned frame differs from the still.
 expect "turntable: three numbered frames" 0 "turntable: 3 frames" -- \
     "$locus" render "4*x^2+y^2+z^2/4-1" -o "$tmp/turn.png" --size 16x16 --turntable 3 --threads 1
