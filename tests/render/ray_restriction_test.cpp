@@ -269,6 +269,55 @@ TEST(LineRestrictor, BallsHoldTheExactRestrictionWithAndWithoutHorner) {
     EXPECT_GT(checked, 300);
 }
 
+// Mixed terms at the largest exponents the tables hold (degree 64, an axis' power 63 among its
+// mixed terms): the expansion's tables are packed by row (row k from k(k + 1)/2), and these
+// reach their last rows. Every exact coefficient lies within its ball, in doubles and in
+// double-double, and the plain restriction agrees with the exact one.
+TEST(LineRestrictor, BallsHoldTheExactRestrictionAtTheLargestExponents) {
+    std::mt19937_64 rng(64);
+    std::uniform_real_distribution<double> coordinate(-1.1, 1.1);
+    const std::vector<std::string> equations = {
+        "x^63*y-3*y^61*z^3+z^62*x^2/7+x^2*y*z-1",
+        "x^32*y^32+y^40*z^24/5-z^50*x^14+x^63*z-2*y^63*x+x^64+y^64-z^64+1/3",
+        "x^60*y*z^3-x*y^60*z^3+x^3*y*z^60-12345678901234567891*x*y*z-2"};
+    int checked = 0;
+    for (const std::string& equation : equations) {
+        const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+        ASSERT_EQ(f.degree(), 64) << equation;
+        const LineRestrictor restrictor(f.terms(), f.low_words());
+        for (int trial = 0; trial < 4; ++trial) {
+            DoubleDoubleLine line;
+            for (int i = 0; i < 3; ++i) {
+                line.origin_hi[i] = coordinate(rng);
+                line.direction_hi[i] = 0.05 * coordinate(rng);
+            }
+            const std::vector<ExactCoefficient> exact = exact_restriction(f.equation(), line);
+            for (const bool double_double : {false, true}) {
+                const RestrictionBall ball =
+                    double_double
+                        ? restrictor.restrict_with_double_double_bounds(
+                              line, LineError{}, f.double_double_coefficient_error())
+                        : restrictor.restrict_with_bounds(line.origin_hi, line.direction_hi,
+                                                          LineError{}, f.coefficient_error());
+                ASSERT_TRUE(ball.certified) << equation;
+                for (int k = 0; k <= ball.polynomial.degree; ++k) {
+                    const auto at = static_cast<std::size_t>(k);
+                    const bool within = at < exact.size()
+                                            ? exact[at].within(ball.polynomial.c[k], ball.radius[k])
+                                            : std::abs(ball.polynomial.c[k]) <= ball.radius[k];
+                    EXPECT_TRUE(within)
+                        << equation << (double_double ? " (double-double)" : "") << ": coefficient "
+                        << k << " " << ball.polynomial.c[k] << " ± " << ball.radius[k];
+                    ++checked;
+                }
+            }
+            expect_restriction_matches(f, restrictor.restrict_to(line.origin_hi, line.direction_hi),
+                                       line.origin_hi, line.direction_hi, 1e-11);
+        }
+    }
+    EXPECT_GT(checked, 1000);
+}
+
 TEST(RayFamily, MatchesTheGeneralRestrictionOfEachPrimaryRay) {
     for (int seed = 0; seed < test::seed_count(12); ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
