@@ -15,6 +15,9 @@ void add_implicit_bench(CLI::App& app, cli::CommandContext& context);
 // Every trace method on the surface suite against exact isolation, and surf's time
 // (bench/render_bench.cpp).
 void add_render_bench(CLI::App& app, cli::CommandContext& context);
+// The PNG writer on the surface suite's frames against zlib in the same run
+// (bench/png_bench.cpp).
+void add_png_bench(CLI::App& app, cli::CommandContext& context);
 // The server of `locus view` driven like the page: frames/s and latency (bench/view_bench.cpp).
 void add_view_bench(CLI::App& app, cli::CommandContext& context);
 // Hart's speed-ups on the SDF scene suite (bench/sdf_bench.cpp).

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     bench::add_groebner_bench(app, context);
     bench::add_implicit_bench(app, context);
     bench::add_render_bench(app, context);
+    bench::add_png_bench(app, context);
     bench::add_sdf_bench(app, context);
     bench::add_view_bench(app, context);
     return cli::run_app(app, context, argc, argv, "locus-bench");

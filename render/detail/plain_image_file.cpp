@@ -69,7 +69,8 @@ std::string write_plain_image(const std::string& path, int width, int height,
     File file;
     if (lowercase_extension(path) == ".png") {
         // Written as the pieces come. The bands are compressed before the first piece, and the
-        // file is opened at it: an encoding that fails (zlib out of memory) leaves no file.
+        // file is opened at it: an encoding that fails (its library missing, memory exhausted)
+        // leaves no file.
         std::string failure;
         encode_png(width, height, row, [&](const char* data, std::size_t size) {
             if (!file && failure.empty()) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <cstdlib>
 #include <new>
 #include <optional>
 #include <string>
@@ -24,10 +23,9 @@ namespace {
 
 // ISA-L's igzip at its level 1 and the Sub filter on every row. Rendered pictures are mostly
 // flat background and smooth shading, which Sub predicts. igzip, with its hash and Huffman
-// coding in vector code, deflates a 512² render of endrass_octic in 0.9 ms to 124 895 bytes
-// where zlib's level 2 took 4.8–5.9 ms for 125 517 (and zlib's level 6 with libpng's choice of
-// filter per row five times as long again, for 20 % less): the encoding had been a tenth of
-// the whole command.
+// coding in vector code, makes this writer 0.28–0.41 of the time of the zlib (level 2) writer
+// it replaced, on one thread, for files within 3 % (`locus-bench png`): the encoding had been
+// a tenth of a whole `locus render`.
 constexpr int kLevel = 1;
 // The ISA-L library's file name (its soname, from the version of the headers compiled against),
 // for dlopen.
@@ -89,10 +87,9 @@ const Igzip& igzip() {
 }
 
 // igzip's state for one stream (82 KB) and its level's buffer (hash table and tokens) in one
-// block. The small buffer (84 KB) compresses a 512² frame as well and as fast as the default
-// (276 KB) within 0.2 %, and in ordinary pages the block costs a whole command no more than
-// the default's in a 2 MB large page (medians of 30 alternating runs each on five suite
-// surfaces, within ±2 ms either way).
+// block. The small buffer (84 KB) compressed a 512² frame within 0.2 % of the default (276 KB)
+// and as fast, and in ordinary pages the block cost a whole command no more than the default's
+// in a 2 MB large page (measured when it was chosen, 2026-11-28: performance.md).
 class DeflateStream {
   public:
     DeflateStream() : stream_(new (block_.data()) isal_zstream) {}
@@ -270,15 +267,9 @@ void emit_png(int width, int height, const std::vector<Band>& bands, const PngSi
 }  // namespace
 
 std::string encode_png(int width, int height, const RgbRowSource& row) {
-    const std::vector<Band> bands = deflate_bands(width, height, row);
-    std::size_t bytes = 8 + 3 * 12 + 13 + kZlibHeader.size() + 4;
-    for (const Band& band : bands) {
-        bytes += band.deflated.size();
-    }
     std::string png;
-    png.reserve(bytes);
-    emit_png(width, height, bands,
-             [&png](const char* data, std::size_t size) { png.append(data, size); });
+    encode_png(width, height, row,
+               [&png](const char* data, std::size_t size) { png.append(data, size); });
     return png;
 }
 
@@ -286,12 +277,11 @@ void encode_png(int width, int height, const RgbRowSource& row, const PngSink& p
     emit_png(width, height, deflate_bands(width, height, row), put);
 }
 
-bool prepare_png_encoder() {
+void prepare_png_encoder() {
     try {
         igzip();
-        return true;
     } catch (const Error&) {
-        return false;  // the first encoding reports it
+        // The first encoding tries again and reports it.
     }
 }
 

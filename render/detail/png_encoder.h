@@ -29,7 +29,7 @@ using PngSink = std::function<void(const char* data, std::size_t size)>;
 void encode_png(int width, int height, const RgbRowSource& row, const PngSink& put);
 
 // Loads the compressor's library (ISA-L, loaded on first use), for a thread with nothing else
-// to do before a frame; false when it cannot be loaded (the encoding then says why).
-bool prepare_png_encoder();
+// to do before a frame. A library that cannot be loaded is reported by the first encoding.
+void prepare_png_encoder();
 
 }  // namespace locus::render::detail

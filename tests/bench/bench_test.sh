@@ -23,6 +23,15 @@ if [[ $(head -1 <<<"$bench_row" | awk -F, '{print NF}') != 19 ]] ||
 else
     echo "ok   render CSV row"; passes=$((passes + 1))
 fi
+# The PNG writer beside zlib: eight fields, both sizes and all three times positive.
+png_row=$("$bench" png --size 32 --cases sphere --min-seconds 0 --csv 2>/dev/null | grep '^sphere,32,')
+if [[ $(awk -F, '{print NF}' <<<"$png_row") != 8 ]] ||
+    ! awk -F, '{ exit !($3 > 0 && $6 > 0 && $4 > 0 && $7 > 0) }' <<<"$png_row"; then
+    fail "png CSV row: $png_row"
+else
+    echo "ok   png CSV row"; passes=$((passes + 1))
+fi
+expect "png: an unknown case" 2 "no surface 'nope'" -- "$bench" png --cases nope
 expect "groebner times a case without Singular" 0 "cyclic4,\"grevlex\",4," -- \
     "$bench" groebner --cases cyclic4 --singular off --min-seconds 0 --csv
 expect "implicit times every route" 0 "sphere,2,4," -- \
