@@ -18,6 +18,7 @@
 #include "bench/singular.h"
 #include "cli/choices.h"
 #include "cli/command_support.h"
+#include "cli/heap_pages.h"
 
 namespace locus::bench {
 namespace {
@@ -46,6 +47,7 @@ struct RatioSummary {
 
 int run_groebner_bench(const GroebnerBenchArgs& args) {
     check_suite_options(args.suite);
+    cli::use_large_pages_for_heap(args.threads);  // as `locus groebner` does
     const std::vector<std::string> cases = suite_case_names(args.suite.data_dir, args.suite.cases);
     const bool with_singular = args.singular != "off" && cli::on_path(args.singular);
     const bool with_giac = args.giac != "off" && cli::on_path(args.giac);

@@ -12,6 +12,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/heap_pages.h"
 #include "cli/process_limits.h"
 
 namespace locus::cli {
@@ -207,6 +208,7 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     }();
     algebra::IdealFile ideal = read_ideal(args.file, args.order);
     algebra::GroebnerRequest request = request_of(args, ideal, deadline);
+    use_large_pages_for_heap(request.threads);
     if (request.characteristic == 0) {
         request.progress = progress.groebner("groebner");
     }

@@ -11,6 +11,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/heap_pages.h"
 #include "cli/process_limits.h"
 
 namespace locus::cli {
@@ -248,6 +249,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
 int run_ideal(const IdealArgs& args, ProgressLine& progress) {
     algebra::GroebnerOptions options;
     options.deadline = apply_process_limits(args.limits);
+    use_large_pages_for_heap(options.threads);
     options.progress = progress.groebner("ideal " + args.operation);
     try {
         return run_operation(args, options, progress);

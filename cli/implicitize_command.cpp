@@ -13,6 +13,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/heap_pages.h"
 #include "cli/process_limits.h"
 #include "implicit/bezier_patch.h"
 #include "implicit/dixon.h"
@@ -149,6 +150,7 @@ int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
     options.threads = args.threads > 0
                           ? args.threads
                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    use_large_pages_for_heap(options.threads);
     for (const auto& [label, map] : maps) {
         implicitize_one(args, map, label, format, options);
         progress.clear();
