@@ -127,9 +127,9 @@ void use_large_pages_for_heap(int threads) {
     done = true;
     advise_main_heap();
     if (threads > 1) {
-        // On a thread of its own, not waited for: it starts oneTBB's threads (about 3 ms),
-        // which a small computation never needs and a large one starts anyway. Joined at exit
-        // (locus itself ends with _Exit; locus-bench returns from main).
+        // On a thread of its own, not waited for: it starts oneTBB's threads (about 3 ms of a
+        // core), which the computation needs anyway. Joined at exit (locus itself ends with
+        // _Exit; locus-bench returns from main).
         static std::jthread helper;
         helper = std::jthread([threads] { advise_worker_heaps(threads); });
     }

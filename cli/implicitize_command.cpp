@@ -150,7 +150,9 @@ int run_implicitize(const ImplicitizeArgs& args, ProgressLine& progress) {
     options.threads = args.threads > 0
                           ? args.threads
                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    use_large_pages_for_heap(options.threads);
+    // The main thread's heap only: most parametrizations take milliseconds, where a thread
+    // started to advise oneTBB's (heap_pages.h) would cost more than it saves.
+    use_large_pages_for_heap(1);
     for (const auto& [label, map] : maps) {
         implicitize_one(args, map, label, format, options);
         progress.clear();
