@@ -2,7 +2,7 @@
 // ideal, implicitize): their allocations (a basis a prime from every F4 replay, the residues
 // of the lift, the certification's tables) are touched once and freed, and every 4 KiB page of
 // them cost a page fault of 5–12 µs on the machines measured. Katsura-10 on one thread made
-// 35 000 of them; with its heap in huge pages, 1 400.
+// 35 000 of them; with its heap in huge pages, about 1 100.
 //
 // Why here and not in glibc: Debian's kernels give huge pages only where madvise asks for them,
 // and glibc's malloc asks only under GLIBC_TUNABLES=glibc.malloc.hugetlb=1, read at the start of
@@ -19,7 +19,7 @@ namespace locus::cli {
 // reservation off: reserved address space would count against it). `threads` > 1 also advises
 // the heaps of that many oneTBB threads, on a thread started for it: pass 1 where the work is
 // small, since a second thread costs a whole process about 0.6 ms here (its start and the
-// exit's teardown), a tenth of a small `locus groebner`. Idempotent.
+// exit's teardown), a twentieth of a small `locus groebner`. Idempotent.
 void use_large_pages_for_heap(int threads);
 
 }  // namespace locus::cli
