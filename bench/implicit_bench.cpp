@@ -20,6 +20,7 @@
 #include "bench/benches.h"
 #include "bench/singular.h"
 #include "cli/command_support.h"
+#include "cli/heap_pages.h"
 #include "implicit/bezier_patch.h"
 #include "implicit/dixon.h"
 #include "implicit/implicitize.h"
@@ -44,6 +45,7 @@ std::string seconds_or_limit(double seconds, double limit) {
 
 int run_implicit_bench(const ImplicitBenchArgs& args) {
     check_suite_options(args.suite);
+    cli::use_large_pages_for_heap(1);  // as `locus implicitize` does
     const std::string dir = args.suite.data_dir + "/implicit";
     const std::vector<std::string> cases = suite_case_names(dir, args.suite.cases);
     const bool with_singular = args.singular != "off" && cli::on_path(args.singular);
