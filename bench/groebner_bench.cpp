@@ -47,7 +47,10 @@ struct RatioSummary {
 
 int run_groebner_bench(const GroebnerBenchArgs& args) {
     check_suite_options(args.suite);
-    cli::use_large_pages_for_heap(args.threads);  // as `locus groebner` does
+    // As `locus groebner` does for long computations (every case of more than one thread in
+    // docs/performance.md is one); for the suite's small cases it also advises the worker
+    // threads' heaps, which `locus groebner` leaves, a difference of the process's start only.
+    cli::use_large_pages_for_heap(args.threads);
     const std::vector<std::string> cases = suite_case_names(args.suite.data_dir, args.suite.cases);
     const bool with_singular = args.singular != "off" && cli::on_path(args.singular);
     const bool with_giac = args.giac != "off" && cli::on_path(args.giac);

@@ -1,5 +1,6 @@
 #include "cli/heap_pages.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <climits>
@@ -13,6 +14,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
@@ -30,9 +32,17 @@ constexpr std::size_t kReservation = std::size_t{1} << 30;
 // = 64 MiB on 64-bit systems, each aligned to its size (malloc/arena.c). A wrong guess only
 // advises some other mapping.
 constexpr std::uintptr_t kThreadHeap = std::uintptr_t{64} << 20;
-// A thread's heap is made writable at once by two blocks of this size (blocks below 32 MiB come
-// from the heap).
+// Blocks below this come from the heap: glibc's largest allowed threshold (its own starts at
+// 128 KiB and rises only as mapped blocks are freed, each of them faulted in page by page).
+constexpr int kMmapThreshold = 32 << 20;
+// glibc's default padding of each growth of the main heap, restored after the reservation.
+constexpr int kDefaultTopPad = 128 << 10;
+// A thread's heap is made writable at once by two blocks of this size.
 constexpr std::size_t kThreadHeapGrowth = std::size_t{30} << 20;
+static_assert(2 * kThreadHeapGrowth < kThreadHeap && kThreadHeapGrowth < kMmapThreshold);
+// How long the threads' advice waits for every thread of its arena to come (with 20 ms, under a
+// load of two busy processes on two cores, the worker often had not).
+constexpr std::chrono::milliseconds kWorkerWait{500};
 
 void advise(std::uintptr_t begin, std::uintptr_t end) {
     begin = (begin + kHugePage - 1) & ~(kHugePage - 1);
@@ -46,12 +56,14 @@ bool address_space_limited() {
     return ::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur != RLIM_INFINITY;
 }
 
-void advise_main_heap() {
-    // Keep what is freed (a trimmed heap is faulted in again), and serve blocks below 32 MiB
-    // from the heap (glibc's own threshold starts at 128 KiB and rises only as mapped blocks
-    // are freed, each of them faulted in page by page).
-    if (::mallopt(M_TRIM_THRESHOLD, INT_MAX) == 0 || ::mallopt(M_MMAP_THRESHOLD, 32 << 20) == 0) {
-        return;
+// Whether the heap could be set up (a glibc that refuses these settings, as under
+// GLIBC_TUNABLES with other heap sizes, gets nothing more: not the threads' part either).
+bool advise_main_heap() {
+    // Serve blocks below kMmapThreshold from the heap, and keep what is freed (a trimmed heap is
+    // faulted in again): the threshold first, so that a refusal leaves glibc as it was.
+    if (::mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 0 ||
+        ::mallopt(M_TRIM_THRESHOLD, INT_MAX) == 0) {
+        return false;
     }
     ::mallopt(M_TOP_PAD, static_cast<int>(kReservation));
     void* const before = ::sbrk(0);
@@ -61,11 +73,13 @@ void advise_main_heap() {
     __asm__ volatile("" : : "r"(probe) : "memory");
     void* const after = ::sbrk(0);
     // Past the reservation the heap grows as glibc's default has it (in ordinary pages).
-    ::mallopt(M_TOP_PAD, 128 << 10);
+    ::mallopt(M_TOP_PAD, kDefaultTopPad);
     std::free(probe);
-    if (before != reinterpret_cast<void*>(-1) && after != reinterpret_cast<void*>(-1)) {
-        advise(reinterpret_cast<std::uintptr_t>(before), reinterpret_cast<std::uintptr_t>(after));
+    if (before == reinterpret_cast<void*>(-1) || after == reinterpret_cast<void*>(-1)) {
+        return false;
     }
+    advise(reinterpret_cast<std::uintptr_t>(before), reinterpret_cast<std::uintptr_t>(after));
+    return true;
 }
 
 // The heap of the calling thread (not the main one), found from a block malloc gives it, then
@@ -89,11 +103,13 @@ void advise_this_thread_heap() {
     std::free(probe);
 }
 
-// Each oneTBB thread of an arena of `threads` other than this one advises its heap. glibc keeps
-// a thread's heap for the life of the thread and oneTBB keeps its threads, whatever arena runs
-// them later. The tasks wait for each other (20 ms at most), so that every thread takes one;
-// a thread busy elsewhere by then is left as it is.
+// Each oneTBB thread of an arena of `threads` (at most the threads oneTBB has) other than this
+// one advises its heap. glibc keeps a thread's heap (its arena's) for the life of the thread and
+// oneTBB keeps its threads, whatever arena runs them later. The tasks wait for each other
+// (kWorkerWait at most), so that every thread takes one; a thread busy elsewhere by then is
+// left as it is.
 void advise_worker_heaps(int threads) {
+    threads = std::min(threads, tbb::info::default_concurrency());
     const std::thread::id caller = std::this_thread::get_id();
     std::atomic<int> arrived{0};
     tbb::task_arena arena(threads);
@@ -102,9 +118,11 @@ void advise_worker_heaps(int threads) {
             0, threads,
             [&](int) {
                 ++arrived;
-                const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(20);
+                // Sleeping, not spinning: on a loaded machine a thread may take long to come,
+                // and the wait must not take a core from the computation meanwhile.
+                const auto until = std::chrono::steady_clock::now() + kWorkerWait;
                 while (arrived.load() < threads && std::chrono::steady_clock::now() < until) {
-                    std::this_thread::yield();
+                    std::this_thread::sleep_for(std::chrono::microseconds(100));
                 }
                 if (std::this_thread::get_id() != caller) {
                     advise_this_thread_heap();
@@ -125,8 +143,7 @@ void use_large_pages_for_heap(int threads) {
         return;
     }
     done = true;
-    advise_main_heap();
-    if (threads > 1) {
+    if (advise_main_heap() && threads > 1) {
         // On a thread of its own, not waited for: it starts oneTBB's threads (about 3 ms of a
         // core), which the computation needs anyway. Joined at exit (locus itself ends with
         // _Exit; locus-bench returns from main).

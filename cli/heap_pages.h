@@ -17,7 +17,9 @@ namespace locus::cli {
 
 // Call before the heavy work, after apply_process_limits (an --max-memory limit turns the
 // reservation off: reserved address space would count against it). `threads` > 1 also advises
-// the heaps of that many oneTBB threads, on a thread started for it: pass 1 where the work is
+// the heaps of the other threads of a oneTBB arena of that many, on a thread started for it
+// (only each thread's first heap of 64 MiB: past it, glibc's next heaps are in ordinary
+// pages); pass 1 where the work is
 // small, since a second thread costs a whole process about 0.6 ms here (its start and the
 // exit's teardown), a twentieth of a small `locus groebner`. Idempotent.
 void use_large_pages_for_heap(int threads);

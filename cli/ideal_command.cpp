@@ -249,7 +249,7 @@ int run_operation(const IdealArgs& args, const algebra::GroebnerOptions& options
 int run_ideal(const IdealArgs& args, ProgressLine& progress) {
     algebra::GroebnerOptions options;
     options.deadline = apply_process_limits(args.limits);
-    use_large_pages_for_heap(options.threads);
+    use_large_pages_for_heap(1);  // the ideal operations run on one thread
     options.progress = progress.groebner("ideal " + args.operation);
     try {
         return run_operation(args, options, progress);
