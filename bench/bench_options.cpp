@@ -1,7 +1,9 @@
 #include "bench/bench_options.h"
 
+#include <algorithm>
 #include <fstream>
 
+#include "algebra/error.h"
 #include "cli/choices.h"
 #include "cli/command_support.h"
 #include "cli/exit_codes.h"
@@ -52,6 +54,35 @@ std::vector<std::string> suite_case_names(const std::string& dir,
         }
     }
     return cases;
+}
+
+std::vector<SuiteSurface> read_surface_cases(const SuiteOptions& options,
+                                             const std::string& command,
+                                             std::span<const std::string> not_surfaces) {
+    const std::string path = options.data_dir + "/surfaces/SUITE.txt";
+    std::vector<SuiteSurface> suite;
+    try {
+        suite = parse_surface_suite(cli::read_input(path));
+    } catch (const Error& e) {
+        throw cli::CommandFailure(cli::exit_input, path + ": " + e.what());
+    }
+    if (options.cases.empty()) {
+        return suite;
+    }
+    std::vector<SuiteSurface> chosen;
+    for (const std::string& name : options.cases) {
+        if (std::find(not_surfaces.begin(), not_surfaces.end(), name) != not_surfaces.end()) {
+            continue;
+        }
+        const auto it = std::find_if(suite.begin(), suite.end(),
+                                     [&](const SuiteSurface& s) { return s.name == name; });
+        if (it == suite.end()) {
+            throw cli::CommandFailure(cli::exit_input,
+                                      command + ": no surface '" + name + "' in the suite");
+        }
+        chosen.push_back(*it);
+    }
+    return chosen;
 }
 
 }  // namespace locus::bench

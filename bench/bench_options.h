@@ -2,11 +2,13 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "bench/surface_suite.h"
 #include "cli/process_limits.h"
 #include "cli/run_app.h"
 
@@ -48,5 +50,13 @@ void add_threads_option(CLI::App* command, int& threads);
 // `dir`/SUITE.txt that are neither empty nor comments ('#').
 std::vector<std::string> suite_case_names(const std::string& dir,
                                           const std::vector<std::string>& chosen);
+
+// The surface suite (`surfaces/SUITE.txt` under --data), narrowed to --cases in their order
+// when there are any; a name in `not_surfaces` (the render suite's "teapot") is left to the
+// caller. A file that does not parse, or a case it lacks, is a CommandFailure (exit 2) naming
+// the file or `command`.
+std::vector<SuiteSurface> read_surface_cases(const SuiteOptions& options,
+                                             const std::string& command,
+                                             std::span<const std::string> not_surfaces = {});
 
 }  // namespace locus::bench

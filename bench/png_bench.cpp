@@ -20,9 +20,8 @@
 #include "algebra/error.h"
 #include "bench/bench_options.h"
 #include "bench/benches.h"
-#include "bench/surf_run.h"
+#include "bench/surf_run.h"  // RunTimes, summary_of
 #include "bench/surface_suite.h"
-#include "cli/command_support.h"
 #include "cli/exit_codes.h"
 #include "render/camera.h"
 #include "render/image_output.h"
@@ -32,8 +31,6 @@
 namespace locus::bench {
 namespace {
 
-using cli::CommandFailure;
-using cli::exit_input;
 using cli::exit_ok;
 
 struct PngBenchArgs {
@@ -92,32 +89,14 @@ std::size_t zlib_level2(const render::RenderedImage& image) {
     }
     // The stream, its zlib header and its checksum, as a file would hold them.
     const std::size_t bytes = z.total_out + 2 + sizeof(std::uint32_t);
-    static_cast<void>(adler);
+    static_cast<void>(adler);  // computed as the old writer did (its work is timed), not kept
     deflateEnd(&z);
     return bytes;
 }
 
 int run_png_bench(const PngBenchArgs& args) {
     check_suite_options(args.suite);
-    std::vector<SuiteSurface> suite;
-    const std::string path = args.suite.data_dir + "/surfaces/SUITE.txt";
-    try {
-        suite = parse_surface_suite(cli::read_input(path));
-    } catch (const Error& e) {
-        throw CommandFailure(exit_input, path + ": " + e.what());
-    }
-    if (!args.suite.cases.empty()) {
-        std::vector<SuiteSurface> chosen;
-        for (const std::string& name : args.suite.cases) {
-            const auto it = std::find_if(suite.begin(), suite.end(),
-                                         [&](const SuiteSurface& s) { return s.name == name; });
-            if (it == suite.end()) {
-                throw CommandFailure(exit_input, "png: no surface '" + name + "' in the suite");
-            }
-            chosen.push_back(*it);
-        }
-        suite = chosen;
-    }
+    const std::vector<SuiteSurface> suite = read_surface_cases(args.suite, "png");
     if (args.suite.csv) {
         std::cout << "case,size,locus_bytes,locus_seconds_one_thread,locus_seconds_all_threads,"
                      "zlib2_bytes,zlib2_seconds,ratio_one_thread\n";

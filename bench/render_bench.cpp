@@ -70,14 +70,6 @@ std::string default_locus_executable() {
     return "locus";
 }
 
-std::vector<SuiteSurface> read_suite(const std::string& path) {
-    try {
-        return parse_surface_suite(read_input(path));
-    } catch (const Error& e) {
-        throw CommandFailure(exit_input, path + ": " + e.what());
-    }
-}
-
 // locus' picture and surf's, each the median (and the fastest) of repeated runs.
 struct Comparison {
     RunTimes locus;
@@ -263,26 +255,13 @@ void run_patch_bench(const RenderBenchArgs& args, const std::vector<render::Trac
 
 int run_render_bench(const RenderBenchArgs& args) {
     check_suite_options(args.suite);
-    std::vector<SuiteSurface> suite = read_suite(args.suite.data_dir + "/surfaces/SUITE.txt");
     // "teapot" names the patch case, which is not in the surface suite.
+    const std::string teapot_case = "teapot";
+    const std::vector<SuiteSurface> suite =
+        read_surface_cases(args.suite, "render", std::span(&teapot_case, 1));
     const bool teapot = args.suite.cases.empty() ||
-                        std::find(args.suite.cases.begin(), args.suite.cases.end(), "teapot") !=
+                        std::find(args.suite.cases.begin(), args.suite.cases.end(), teapot_case) !=
                             args.suite.cases.end();
-    if (!args.suite.cases.empty()) {
-        std::vector<SuiteSurface> chosen;
-        for (const std::string& name : args.suite.cases) {
-            if (name == "teapot") {
-                continue;
-            }
-            const auto it = std::find_if(suite.begin(), suite.end(),
-                                         [&](const SuiteSurface& s) { return s.name == name; });
-            if (it == suite.end()) {
-                throw CommandFailure(exit_input, "render: no surface '" + name + "' in the suite");
-            }
-            chosen.push_back(*it);
-        }
-        suite = chosen;
-    }
     std::vector<render::TraceMethod> methods;
     for (const std::string& name : args.methods) {
         methods.push_back(render::parse_trace_method(name));

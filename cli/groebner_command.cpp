@@ -197,24 +197,6 @@ algebra::GroebnerRequest request_of(const GroebnerArgs& args, const algebra::Ide
     return request;
 }
 
-// Whether the computation is likely long enough for the oneTBB threads' heaps to be worth
-// advising (heap_pages.h): the shape at which `auto` stops answering at once with the signature
-// algorithm (modular_groebner.h), Bézout's bound times the variables from 4 500 on (katsura-9,
-// 0.27 s, is below it; katsura-10, cyclic-7 and eco-10 above).
-bool long_computation(const algebra::IdealFile& ideal) {
-    if (ideal.generators.empty()) {
-        return false;
-    }
-    double shape = static_cast<double>(ideal.generators.front().ring()->num_vars());
-    for (const algebra::Polynomial& g : ideal.generators) {
-        shape *= static_cast<double>(std::max(1L, g.total_degree()));
-        if (shape >= 4500) {
-            return true;
-        }
-    }
-    return false;
-}
-
 int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     const Deadline deadline = apply_process_limits(args.limits);
     const algebra::OutputFormat format = [&] {
@@ -226,7 +208,10 @@ int run_groebner(const GroebnerArgs& args, ProgressLine& progress) {
     }();
     algebra::IdealFile ideal = read_ideal(args.file, args.order);
     algebra::GroebnerRequest request = request_of(args, ideal, deadline);
-    use_large_pages_for_heap(long_computation(ideal) ? request.threads : 1);
+    // The oneTBB threads' heaps too (heap_pages.h) only for the computations that are long:
+    // `auto`'s large shape (katsura-9, 0.27 s, is below it; katsura-10, cyclic-7, eco-10 above).
+    const bool long_computation = algebra::automatic_shape(ideal.generators) > algebra::kLargeShape;
+    use_large_pages_for_heap(long_computation ? request.threads : 1);
     if (request.characteristic == 0) {
         request.progress = progress.groebner("groebner");
     }

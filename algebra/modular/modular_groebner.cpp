@@ -639,6 +639,13 @@ double bezout_bound(std::span<const Polynomial> generators) {
 
 }  // namespace
 
+double automatic_shape(std::span<const Polynomial> generators) {
+    if (generators.empty()) {
+        return 0.0;
+    }
+    return bezout_bound(generators) * static_cast<double>(generators.front().ring()->num_vars());
+}
+
 // `auto` decides from the input's shape, a budget of work and the growth of coefficients, never
 // from elapsed time, so that the same input takes the same route on every run and every
 // machine. Measured one thread, this machine, the signature algorithm (over Z) against the
@@ -684,20 +691,19 @@ GroebnerResult groebner_automatic(std::span<const Polynomial> generators,
     }
     const RingPtr& ring = generators.front().ring();
     const bool degree_order = ring->order().is_degree_order();
-    constexpr double kModularShape = 4500;  // Bézout's bound times the number of variables
     constexpr double kOtherOrderModularShape = 150;
     constexpr std::size_t kDegreeOrderBudget = 80000, kOtherOrderBudget = 300;
     // Growth: 32 bits within 128 elements, 64 within 256, … (four elements a bit).
     constexpr std::size_t kGrowthBits = 32, kGrowthBasis = 128, kLargeShapeBudget = 2000000;
     GroebnerResult result;
-    const double shape = bezout_bound(generators) * static_cast<double>(ring->num_vars());
+    const double shape = automatic_shape(generators);
     const bool skip_probe = !degree_order && shape >= kOtherOrderModularShape &&
                             generators.size() >= ring->num_vars() &&
                             options.max_reduction_steps == 0 && options.max_basis_size == 0;
     GroebnerOptions probing = options;
     if (!degree_order) {
         probing.max_reduction_steps = kOtherOrderBudget;
-    } else if (shape <= kModularShape) {
+    } else if (shape <= kLargeShape) {
         probing.max_reduction_steps = kDegreeOrderBudget;
     } else {
         probing.max_reduction_steps = kLargeShapeBudget;

@@ -76,6 +76,13 @@ struct ModularStats {
 GroebnerResult modular_groebner(std::span<const Polynomial> generators,
                                 const ModularOptions& options = {}, ModularStats* stats = nullptr);
 
+// The shape `auto` decides by: Bézout's bound (the product of the generators' total degrees)
+// times the number of variables (0 for no generators). Above kLargeShape, under degree orders,
+// the signature algorithm no longer answers at once but runs as a probe of coefficient growth
+// (groebner_automatic): the computations that are long.
+double automatic_shape(std::span<const Polynomial> generators);
+inline constexpr double kLargeShape = 4500;
+
 // `--algorithm auto`: the signature-based algorithm (signature_groebner.h) within a budget of
 // reduction steps (80 000 under degree orders, 300 under the others) or, under degree orders
 // above a shape of Bézout's bound times the variables of 4500, until its coefficients grow
