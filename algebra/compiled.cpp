@@ -10,6 +10,7 @@
 #include "algebra/error.h"
 #include "algebra/exact_line_restriction.h"
 #include "algebra/flint_convert.h"
+#include "algebra/flint_threads.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
 #include "algebra/real_roots.h"
@@ -546,6 +547,7 @@ CompiledPolynomial compile_surface(const Polynomial& f) {
 
 ExactRoot exact_first_root(const CompiledPolynomial& f, const Point3& origin,
                            const Point3& direction, double lo, double hi, bool lo_open) {
+    release_flint_caches_at_thread_exit();  // the renderer's workers come here
     // F(t) = f(o + t·d) up to a positive factor, in integers (exact_line_restriction.h).
     detail::FmpzPoly restriction, derivative, common;
     f.exact_->on_line.restrict(origin, direction, restriction.p);

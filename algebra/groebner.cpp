@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "algebra/error.h"
+#include "algebra/flint_threads.h"
 #include "algebra/groebner/signature_groebner.h"
 
 namespace locus::algebra {
@@ -116,6 +117,7 @@ const char* algorithm_name(Algorithm algorithm) {
 }
 
 GroebnerAnswer groebner(std::span<const Polynomial> generators, const GroebnerRequest& request) {
+    release_flint_caches_at_thread_exit();
     if (request.characteristic != 0) {
         return modulo_prime(generators, request);
     }

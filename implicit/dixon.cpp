@@ -16,6 +16,7 @@
 #include "algebra/deadline.h"
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
+#include "algebra/flint_threads.h"
 #include "algebra/modular/modular_polynomial.h"
 #include "algebra/modular/rational_lift.h"
 #include "implicit/detail/modular_lifting.h"
@@ -482,6 +483,7 @@ ImplicitResult implicitize_by_dixon(const Parametrization& map,
     bool stable = false;
     // The determinant modulo one prime, restricted to the support.
     const auto image_modulo = [&](ulong prime) {
+        algebra::release_flint_caches_at_thread_exit();  // on oneTBB's workers
         const std::array<ModMatrix, 4> reduced{
             reduce(matrices[0], rows, columns, prime), reduce(matrices[1], rows, columns, prime),
             reduce(matrices[2], rows, columns, prime), reduce(matrices[3], rows, columns, prime)};

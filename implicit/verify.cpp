@@ -18,6 +18,7 @@
 
 #include "algebra/division.h"
 #include "algebra/flint_convert.h"
+#include "algebra/flint_threads.h"
 
 namespace locus::implicit {
 
@@ -208,6 +209,7 @@ bool vanishes_on_grid(const Polynomial& f, const std::vector<Polynomial>& numera
     }
     std::atomic<bool> nonzero{false};
     const auto vanishes_modulo = [&](ulong p) {
+        algebra::release_flint_caches_at_thread_exit();  // on oneTBB's workers
         nmod_t mod;
         nmod_init(&mod, p);
         std::vector<ulong> layout(position.size()), f_mod(f_terms.coefficients.size());

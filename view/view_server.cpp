@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "algebra/error.h"
+#include "algebra/flint_threads.h"
 #include "algebra/print.h"
 #include "implicit/implicitize.h"
 #include "implicit/parametrization.h"
@@ -429,16 +430,20 @@ struct ViewServer::State {
         });
         server->get("/api/startup",
                     [this](const HttpRequest&, HttpResponse& r) { handle_startup(r); });
-        server->post("/api/parse",
-                     [this](const HttpRequest& q, HttpResponse& r) { handle_parse(q, r); });
-        server->post("/api/render",
-                     [this](const HttpRequest& q, HttpResponse& r) { handle_render(q, r); });
-        server->post("/api/check",
-                     [this](const HttpRequest& q, HttpResponse& r) { handle_check(q, r); });
-        server->post("/api/pick",
-                     [this](const HttpRequest& q, HttpResponse& r) { handle_pick(q, r); });
-        server->post("/api/implicitize",
-                     [this](const HttpRequest& q, HttpResponse& r) { handle_implicitize(q, r); });
+        // The API's handlers parse, compile and implicitize with FLINT on the HTTP server's
+        // threads, which end when the server stops: each frees FLINT's caches then.
+        using Handler = void (State::*)(const HttpRequest&, HttpResponse&);
+        const auto api = [this](Handler handler) {
+            return [this, handler](const HttpRequest& q, HttpResponse& r) {
+                algebra::release_flint_caches_at_thread_exit();
+                (this->*handler)(q, r);
+            };
+        };
+        server->post("/api/parse", api(&State::handle_parse));
+        server->post("/api/render", api(&State::handle_render));
+        server->post("/api/check", api(&State::handle_check));
+        server->post("/api/pick", api(&State::handle_pick));
+        server->post("/api/implicitize", api(&State::handle_implicitize));
         // Anything else, and errors httplib answers itself (413 for a body past the limit).
         server->on_error([](const HttpRequest&, HttpResponse& r) {
             if (r.body.empty()) {

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "algebra/assert.h"
+#include "algebra/flint_threads.h"
 #include "algebra/groebner/buchberger.h"
 #include "algebra/groebner/detail/reduction.h"
 
@@ -75,8 +76,10 @@ std::vector<IntegerPolynomial> interreduce(std::vector<BasisElement> basis,
             Reducer reducer;
             ReductionCounts counts;
         };
-        tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers(
-            [&layout] { return std::make_unique<Worker>(layout); });
+        tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers([&layout] {
+            release_flint_caches_at_thread_exit();  // made on the worker that uses it
+            return std::make_unique<Worker>(layout);
+        });
         tbb::task_arena arena(threads);
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kept.size(), 1),

@@ -43,6 +43,7 @@
 #include <tbb/task_arena.h>
 
 #include "algebra/error.h"
+#include "algebra/flint_threads.h"
 #include "algebra/groebner/detail/reduction.h"
 
 namespace locus::algebra {
@@ -473,6 +474,7 @@ std::vector<Taken> SignatureRun::take_batch(std::size_t most, int threads,
     }
     if (!workers_) {
         workers_ = std::make_unique<Workers>(threads, [this, &options] {
+            release_flint_caches_at_thread_exit();  // made on the worker that uses it
             auto ws = std::make_unique<Workspace>(layout_);
             ws->reducer.set_deadline(options.deadline);
             return ws;

@@ -12,6 +12,7 @@
 
 #include "algebra/division.h"
 #include "algebra/error.h"
+#include "algebra/flint_threads.h"
 #include "algebra/groebner/detail/pair_criteria.h"
 #include "algebra/groebner/detail/reduction.h"
 #include "algebra/groebner/detail/residue_lanes.h"
@@ -156,6 +157,7 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             std::atomic<std::size_t> first_failure{jobs};
             // Each thread numbers its own columns and finds its own reducer rows.
             tbb::enumerable_thread_specific<std::unique_ptr<detail::ZeroReducer>> reducers([&] {
+                release_flint_caches_at_thread_exit();  // made on the worker that uses it
                 auto r = std::make_unique<detail::ZeroReducer>(layout, elements);
                 r->set_deadline(deadline);
                 return r;

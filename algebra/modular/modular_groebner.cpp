@@ -17,6 +17,7 @@
 
 #include "algebra/deadline.h"
 #include "algebra/error.h"
+#include "algebra/flint_threads.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/detail/fglm.h"
 #include "algebra/modular/rational_lift.h"
@@ -78,6 +79,7 @@ void over_elements(int threads, std::size_t count, const Body& body) {
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4),
                           [&](const tbb::blocked_range<std::size_t>& range) {
+                              release_flint_caches_at_thread_exit();
                               body(range.begin(), range.end());
                           });
     });
@@ -209,6 +211,7 @@ std::optional<std::vector<Polynomial>> reconstruct(
     std::mutex failure_mutex;
     std::size_t failed_at = count;  // the earliest position that failed
     auto work = [&] {
+        release_flint_caches_at_thread_exit();
         modular::RationalLift::Attempt attempt(group.lift);
         Integer hint(1);  // the last denominator found by this thread
         for (;;) {
@@ -425,6 +428,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 const auto replay_start = Clock::now();
                 const std::size_t group_count = (ready.size() + batch - 1) / batch;
                 auto replay_group = [&](std::size_t g) {
+                    release_flint_caches_at_thread_exit();
                     const std::size_t begin = g * batch;
                     const std::size_t end = std::min(ready.size(), begin + batch);
                     std::vector<std::uint32_t> batch_primes;
