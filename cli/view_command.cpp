@@ -2,9 +2,12 @@
 // 127.0.0.1 (or --host) and prints `serving on http://HOST:PORT/` as its first line. Ctrl-C
 // (SIGINT) or SIGTERM stops it cleanly; --timeout stops it after that many seconds (exit 0:
 // serving for a while is the job) and bounds the start-up (implicitizing a .param file).
+#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -35,6 +38,15 @@ struct ViewArgs {
     int threads = 0;
     std::optional<double> timeout;
 };
+
+// The pipe through which SIGINT and SIGTERM reach the thread that stops the server: the
+// handler writes a byte (write is async-signal-safe), that thread reads it.
+int stop_pipe[2] = {-1, -1};
+
+extern "C" void request_stop(int) {
+    const char byte = 0;
+    [[maybe_unused]] const ssize_t written = ::write(stop_pipe[1], &byte, 1);
+}
 
 // The scene the command line names, compiled and framed once.
 view::Startup startup_of(const std::string& input, Deadline deadline) {
@@ -104,13 +116,25 @@ int run_view(const ViewArgs& args) {
                      "who reaches the address can render with it\n",
                      args.host.c_str());
     }
-    // SIGINT and SIGTERM go to one thread that stops the server; every thread started from
-    // here on (httplib's, oneTBB's) inherits the mask.
+    // SIGINT and SIGTERM go to one thread that stops the server: every thread started from
+    // here on (httplib's, oneTBB's) inherits a mask that blocks them, that thread unblocks them,
+    // and their handler writes to the pipe it reads. A handler rather than sigwait: threads that
+    // libraries start before main (OpenBLAS's, which the sanitized build links in through
+    // OpenImageIO) do not block them, and the signal's default action there ended the process.
     sigset_t signals;
     sigemptyset(&signals);
     sigaddset(&signals, SIGINT);
     sigaddset(&signals, SIGTERM);
     pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    if (::pipe2(stop_pipe, O_CLOEXEC) != 0) {
+        throw CommandFailure(exit_resource, "cannot make a pipe for the stop signals");
+    }
+    struct sigaction action = {};
+    action.sa_handler = request_stop;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
 
     view::ViewServer server(std::move(options));
     int port = 0;
@@ -130,8 +154,10 @@ int run_view(const ViewArgs& args) {
     std::condition_variable stopped_cv;
     bool stopped = false;
     std::thread signal_waiter([&] {
-        int received = 0;
-        sigwait(&signals, &received);
+        pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
+        char byte = 0;
+        while (::read(stop_pipe[0], &byte, 1) < 0 && errno == EINTR) {
+        }
         server.stop();
     });
     std::thread timer;
@@ -153,7 +179,7 @@ int run_view(const ViewArgs& args) {
         timer.join();
     }
     // Wake the signal thread if the server stopped for another reason.
-    pthread_kill(signal_waiter.native_handle(), SIGTERM);
+    request_stop(0);
     signal_waiter.join();
     std::fprintf(stderr, "locus view: stopped\n");
     return exit_ok;

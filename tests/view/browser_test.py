@@ -40,7 +40,9 @@ def check(condition, what):
 
 
 EQUATION = "x^4+y^4+z^4-a*(x^2+y^2+z^2)+0.5"
-server = subprocess.Popen([locus, "view", EQUATION, "--port", "0", "--timeout", "240"],
+SANITIZED = os.environ.get("LOCUS_SANITIZED") == "1"
+server = subprocess.Popen([locus, "view", EQUATION, "--port", "0", "--timeout",
+                           "800" if SANITIZED else "240"],
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 first_line = server.stdout.readline().strip()
 check(first_line.startswith("serving on http://127.0.0.1:"), "first line: " + first_line)
@@ -58,7 +60,12 @@ def frames():
     return int(browser.execute_script("return document.body.dataset.frames || 0"))
 
 
-def wait_for_full_frame(after, what, limit=30):
+# Seconds to wait for a full frame; the sanitized build (LOCUS_SANITIZED, set by ctest) renders
+# 15-40 times slower.
+FRAME_LIMIT = 150 if SANITIZED else 30
+
+
+def wait_for_full_frame(after, what, limit=FRAME_LIMIT):
     deadline = time.time() + limit
     while time.time() < deadline:
         if frames() > after and browser.execute_script("return document.body.dataset.level") == "2":
