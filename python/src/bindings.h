@@ -5,8 +5,6 @@
 
 #include <pybind11/pybind11.h>
 
-#include <flint/flint.h>
-
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -18,6 +16,7 @@
 #include <type_traits>
 
 #include "algebra/deadline.h"
+#include "algebra/flint_threads.h"
 #include "algebra/poly_ring.h"
 #include "algebra/rational.h"
 
@@ -82,16 +81,16 @@ std::invoke_result_t<Work&> run_interruptible(Work&& work) {
         std::condition_variable finished;
         bool done = false;
         std::thread worker([&] {
+            // FLINT's caches are per thread and only the thread can release them: without
+            // this a call that met big integers leaked about 70–220 kB (heaptrack, a loop of
+            // groebner calls). What the work returns stays valid (FLINT frees its pages when
+            // their last integer is cleared, by whichever thread).
+            algebra::release_flint_caches_at_thread_exit();
             try {
                 result.emplace(work());
             } catch (...) {
                 failure = std::current_exception();
             }
-            // FLINT's caches are per thread and only the thread can release them: without
-            // this a call that met big integers leaked about 70–220 kB (heaptrack, a loop of
-            // groebner calls). What the work returned stays valid (FLINT frees its pages when
-            // their last integer is cleared, by whichever thread).
-            flint_cleanup();
             const std::lock_guard<std::mutex> lock(mutex);
             done = true;
             finished.notify_one();
