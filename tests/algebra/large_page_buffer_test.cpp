@@ -1,6 +1,7 @@
 // F4's grow-only buffer (algebra/modular/detail/large_page_buffer.h): small sizes from the
-// ordinary heap, from 256 KiB whole 2 MiB-aligned large pages; every value it promises room
-// for can be written and read back (AddressSanitizer, in the debug preset, checks the bounds).
+// ordinary heap, from 256 KiB whole 2 MiB-aligned large pages of a mapping of its own that
+// grows by mremap; every value it promises room for can be written and read back (past the
+// end of a mapping is a fault; AddressSanitizer, in the debug preset, checks the heap's).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -34,6 +35,21 @@ TEST(LargePageBuffer, GrowsFromTheHeapToLargePages) {
     const std::uint32_t* large = buffer.data();
     fill_and_check(buffer, 3'000'001);  // within the rounding to whole pages: no growth
     EXPECT_EQ(buffer.data(), large);
+    // Growing a large buffer moves its mapping (mremap) to a region that is aligned again.
+    for (std::size_t n : {5'000'000u, 9'000'000u, 14'000'000u}) {
+        fill_and_check(buffer, n);
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(buffer.data()) % (std::uintptr_t{1} << 21), 0u)
+            << n;
+    }
+}
+
+TEST(LargePageBuffer, StartsLarge) {
+    LargePageBuffer<std::uint64_t> buffer;
+    buffer.make_room(1'000'000);  // 8 MB at once: a mapping from the start
+    std::uint64_t* data = buffer.data();
+    data[0] = 1;
+    data[999'999] = 2;
+    EXPECT_EQ(data[0] + data[999'999], 3u);
 }
 
 }  // namespace
