@@ -127,6 +127,11 @@ void F4Engine::step() {
     for (ModularPolynomial& poly : new_elements(fresh, column_monomials)) {
         add_element(std::move(poly), degree);
     }
+    // Under lex one pair a step: the scan of every pair each step would cost more than the
+    // memory it gives back.
+    if (batch_) {
+        release_finished();
+    }
     if (options_.progress) {
         options_.progress(stats_.steps, basis_.size());
     }
@@ -154,8 +159,10 @@ std::vector<ModularPolynomial> F4Engine::reduced_basis() {
                 if (h == g || !layout_.divides(lead(h), lead(g))) {
                     continue;
                 }
-                // Equal leading monomials: keep the first.
-                divisible = !layout_.equal(lead(h), lead(g)) || h < g;
+                // Equal leading monomials (generators only: F4's new elements have leading
+                // monomials no earlier one divides): keep the last, the one add_element left
+                // non-redundant (the earlier ones may be released).
+                divisible = !layout_.equal(lead(h), lead(g)) || h > g;
             }
             if (!divisible) {
                 minimal.push_back(static_cast<std::uint32_t>(g));

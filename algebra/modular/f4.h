@@ -26,8 +26,9 @@ struct F4Stats {
     std::size_t removed_by_product = 0;
     std::size_t removed_by_chain = 0;
     std::size_t pairs_reduced = 0;
-    std::size_t zero_rows = 0;     // S-halves that reduced to zero
-    std::size_t largest_rows = 0;  // of the largest matrix
+    std::size_t zero_rows = 0;          // S-halves that reduced to zero
+    std::size_t released_elements = 0;  // redundant ones whose terms were freed (f4_pairs.cpp)
+    std::size_t largest_rows = 0;       // of the largest matrix
     std::size_t largest_columns = 0;
     double largest_density = 0.0;         // its share of non-zero entries
     double symbolic_seconds = 0.0;        // pair selection and symbolic preprocessing

@@ -12,7 +12,7 @@ void F4Engine::append_element(ModularPolynomial poly) {
     const std::size_t h = basis_.size();
     fits_trace_.push_back(replaying_ != nullptr && h < replaying_->supports.size() &&
                           poly.monomials == replaying_->supports[h]);
-    basis_.push_back({std::move(poly), 0, false, 0, {}});
+    basis_.push_back({std::move(poly), 0, false, false, 0, {}});
     basis_[h].mask = layout_.divisibility_mask(lead(h));
 }
 
@@ -23,7 +23,7 @@ void F4Engine::add_element(ModularPolynomial poly, std::uint32_t sugar) {
     if (record_ != nullptr) {
         record_->supports.push_back(poly.monomials);
     }
-    basis_.push_back({std::move(poly), 0, false, sugar, {}});
+    basis_.push_back({std::move(poly), 0, false, false, sugar, {}});
     basis_[h].mask = layout_.divisibility_mask(lead(h));
     std::vector<Pair> fresh;
     for (std::size_t g = 0; g < h; ++g) {
@@ -128,6 +128,30 @@ std::vector<Pair> F4Engine::select_pairs(std::uint32_t& degree) {
     }
     stats_.pairs_reduced += chosen.size();
     return chosen;
+}
+
+void F4Engine::release_finished() {
+    if (replaying_ != nullptr) {
+        return;
+    }
+    std::vector<char> paired(basis_.size(), 0);
+    for (const Pair& pair : pairs_) {
+        paired[pair.first] = 1;
+        paired[pair.second] = 1;
+    }
+    for (std::size_t g = 0; g < basis_.size(); ++g) {
+        Element& e = basis_[g];
+        if (!e.redundant || e.released || paired[g]) {
+            continue;
+        }
+        e.poly.monomials.resize(words_);
+        e.poly.monomials.shrink_to_fit();
+        e.poly.coefficients.resize(1);
+        e.poly.coefficients.shrink_to_fit();
+        e.term_hashes = {};
+        e.released = true;
+        ++stats_.released_elements;
+    }
 }
 
 }  // namespace locus::algebra::modular::detail

@@ -3,11 +3,14 @@
 
 #include <algorithm>
 
+#include "algebra/assert.h"
+
 namespace locus::algebra::modular::detail {
 
 RowSpec F4Engine::make_row(std::size_t element, const std::uint64_t* multiplier) {
     RowSpec row{element, {}};
     Element& e = basis_[element];
+    LOCUS_ASSERT(!e.released);
     const ModularPolynomial& f = e.poly;
     if (e.term_hashes.empty()) {
         e.term_hashes.reserve(f.size());
@@ -36,7 +39,7 @@ std::optional<std::size_t> F4Engine::reducer_for(const std::uint64_t* m) const {
         if (!basis_[g].redundant) {
             return g;
         }
-        if (!redundant) {
+        if (!redundant && !basis_[g].released) {
             redundant = g;
         }
     }

@@ -30,6 +30,8 @@ struct Element {
     ModularPolynomial poly;  // monic
     std::uint64_t mask;      // divisibility mask of the leading monomial
     bool redundant = false;  // a later element's leading monomial divides its own
+    // Redundant and in no pending pair: only its leading monomial is kept (release_finished).
+    bool released = false;
     std::uint32_t sugar = 0;
     // The monomial table's hashes of its terms, filled when it is first multiplied (make_row):
     // a product's hash is the multiplier's plus the term's.
@@ -135,6 +137,11 @@ class F4Engine {
     // Gebauer–Möller (Becker–Weispfenning's UPDATE) for the element just appended.
     void add_element(ModularPolynomial poly, std::uint32_t sugar);
     std::vector<Pair> select_pairs(std::uint32_t& degree);
+    // Frees the terms of the redundant elements that no pending pair needs, keeping their
+    // leading monomials (the final reduction compares them): such an element is never multiplied
+    // again, a reducer being looked for among the others first and always found there. Not in
+    // a replay, whose recorded rows name elements by index.
+    void release_finished();
 
     // Symbolic preprocessing (f4_symbolic.cpp).
     RowSpec make_row(std::size_t element, const std::uint64_t* multiplier);
