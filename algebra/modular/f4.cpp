@@ -171,8 +171,10 @@ std::vector<ModularPolynomial> F4Engine::reduced_basis() {
         for (Element& e : basis_) {
             e.redundant = true;
         }
+        live_.clear();
         for (std::size_t g : minimal) {
             basis_[g].redundant = false;
+            live_.add(g, basis_[g].mask, lead(g), words_);
         }
         std::vector<RowSpec> reducers, none;
         table_.clear();

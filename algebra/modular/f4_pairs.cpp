@@ -14,6 +14,7 @@ void F4Engine::append_element(ModularPolynomial poly) {
                           poly.monomials == replaying_->supports[h]);
     basis_.push_back({std::move(poly), 0, false, false, 0, {}});
     basis_[h].mask = layout_.divisibility_mask(lead(h));
+    live_.add(h, basis_[h].mask, lead(h), words_);
 }
 
 // Gebauer–Möller (Becker–Weispfenning's UPDATE) for the element just appended.
@@ -26,10 +27,7 @@ void F4Engine::add_element(ModularPolynomial poly, std::uint32_t sugar) {
     basis_.push_back({std::move(poly), 0, false, false, sugar, {}});
     basis_[h].mask = layout_.divisibility_mask(lead(h));
     std::vector<Pair> fresh;
-    for (std::size_t g = 0; g < h; ++g) {
-        if (basis_[g].redundant) {
-            continue;
-        }
+    for (const std::uint32_t g : live_.index) {
         Pair pair{g, h, std::vector<std::uint64_t>(words_), 0};
         layout_.lcm(lead(g), lead(h), pair.lcm.data());
         const std::uint32_t lcm_degree = layout_.leading_weight(pair.lcm.data());
@@ -87,11 +85,23 @@ void F4Engine::add_element(ModularPolynomial poly, std::uint32_t sugar) {
         }
         pairs_.push_back(std::move(fresh[a]));
     }
-    for (std::size_t g = 0; g < h; ++g) {
-        if (!basis_[g].redundant && layout_.divides(lead(h), lead(g))) {
+    // The elements h makes redundant leave the live ones, and h joins them.
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < live_.index.size(); ++k) {
+        const std::uint32_t g = live_.index[k];
+        if (layout_.divides(lead(h), lead(g))) {
             basis_[g].redundant = true;
+            continue;
         }
+        live_.index[kept] = g;
+        live_.mask[kept] = live_.mask[k];
+        std::copy_n(live_.lead.data() + k * words_, words_, live_.lead.data() + kept * words_);
+        ++kept;
     }
+    live_.index.resize(kept);
+    live_.mask.resize(kept);
+    live_.lead.resize(kept * words_);
+    live_.add(h, basis_[h].mask, lead(h), words_);
 }
 
 // The pairs of this step: all of the least sugar degree (batch_, degree orders), or the one

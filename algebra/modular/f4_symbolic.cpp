@@ -28,22 +28,16 @@ RowSpec F4Engine::make_row(std::size_t element, const std::uint64_t* multiplier)
     return row;
 }
 
-// A basis element whose leading monomial divides m (non-redundant ones first).
+// The first non-redundant element whose leading monomial divides m (f4_engine.h).
 std::optional<std::size_t> F4Engine::reducer_for(const std::uint64_t* m) const {
     const std::uint64_t mask = layout_.divisibility_mask(m);
-    std::optional<std::size_t> redundant;
-    for (std::size_t g = 0; g < basis_.size(); ++g) {
-        if ((basis_[g].mask & ~mask) != 0 || !layout_.divides(lead(g), m)) {
-            continue;
-        }
-        if (!basis_[g].redundant) {
-            return g;
-        }
-        if (!redundant && !basis_[g].released) {
-            redundant = g;
+    const std::size_t count = live_.index.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        if ((live_.mask[k] & ~mask) == 0 && layout_.divides(live_.lead.data() + k * words_, m)) {
+            return live_.index[k];
         }
     }
-    return redundant;
+    return std::nullopt;
 }
 
 // Symbolic preprocessing: reducer rows for every monomial of `rows` (and of the reducers

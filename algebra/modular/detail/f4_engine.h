@@ -145,7 +145,9 @@ class F4Engine {
 
     // Symbolic preprocessing (f4_symbolic.cpp).
     RowSpec make_row(std::size_t element, const std::uint64_t* multiplier);
-    // A basis element whose leading monomial divides m (non-redundant ones first).
+    // The first non-redundant basis element whose leading monomial divides m. (A redundant one
+    // never need be looked at: the element that made it redundant, or the one that made that
+    // one redundant, and so on, divides m too and is not.)
     std::optional<std::size_t> reducer_for(const std::uint64_t* m) const;
     // Symbolic preprocessing: reducer rows for every monomial of `rows` (and of the reducers
     // themselves) that some leading monomial divides. `pivot_of_monomial` maps table indices to
@@ -229,6 +231,26 @@ class F4Engine {
     F4Stats& stats_;
     MonomialTable table_;
     std::vector<Element> basis_;
+    // The non-redundant elements, ascending, with their masks and leading monomials side by
+    // side: the searches for a reducer (one for every column of every step) and for new pairs
+    // read these few kilobytes instead of every element (cyclic-8 modulo 65 521: 372 of 1 780).
+    struct LiveElements {
+        std::vector<std::uint32_t> index;
+        std::vector<std::uint64_t> mask;
+        std::vector<std::uint64_t> lead;  // words_ a element
+        void add(std::size_t element, std::uint64_t element_mask, const std::uint64_t* monomial,
+                 std::size_t words) {
+            index.push_back(static_cast<std::uint32_t>(element));
+            mask.push_back(element_mask);
+            lead.insert(lead.end(), monomial, monomial + words);
+        }
+        void clear() {
+            index.clear();
+            mask.clear();
+            lead.clear();
+        }
+    };
+    LiveElements live_;
     std::vector<Pair> pairs_;
     std::vector<std::uint64_t> scratch_ = std::vector<std::uint64_t>(words_);
     LargePageBuffer<std::uint32_t> split_storage_;  // a step's reducers, split (reduce_rows)
