@@ -81,6 +81,10 @@ async function requestFrame(level) {
     if (level === 0) { pending = 0; return; }   // while dragging: the next one, not a queue
     inFlight.abort();
   }
+  // This frame shows the latest state: a preview queued behind the one just aborted is stale
+  // (run after this frame, it became the last one shown, and the refinement never asked for
+  // the full frame).
+  pending = null;
   const controller = new AbortController();
   inFlight = controller;
   const side = LEVELS[level];
