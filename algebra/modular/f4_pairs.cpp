@@ -141,9 +141,6 @@ std::vector<Pair> F4Engine::select_pairs(std::uint32_t& degree) {
 }
 
 void F4Engine::release_finished() {
-    if (replaying_ != nullptr) {
-        return;
-    }
     std::vector<char> paired(basis_.size(), 0);
     for (const Pair& pair : pairs_) {
         paired[pair.first] = 1;

@@ -139,8 +139,8 @@ class F4Engine {
     std::vector<Pair> select_pairs(std::uint32_t& degree);
     // Frees the terms of the redundant elements that no pending pair needs, keeping their
     // leading monomials (the final reduction compares them): such an element is never multiplied
-    // again, a reducer being looked for among the others first and always found there. Not in
-    // a replay, whose recorded rows name elements by index.
+    // again, a reducer being looked for among the others first and always found there. Called
+    // by step(), which a replay does not run (its recorded rows name elements by index).
     void release_finished();
 
     // Symbolic preprocessing (f4_symbolic.cpp).
