@@ -155,7 +155,13 @@ std::optional<Integer> RationalLift::Attempt::common_denominator(
     }
     fmpz_lll_t context;
     fmpz_lll_context_init_default(context);
-    fmpz_lll(lattice, nullptr, context);
+    // Doubles with exact dot products where they suffice (the full reduction, fmpz_lll, runs a
+    // truncating loop and then proves the basis reduced in MPFR: 4 % of katsura-10's run, 0.26
+    // s of a katsura-6 with a 5 000-bit coefficient, against 0.7 % and 0.04 s). A basis only
+    // proposes a denominator: the tests below and the later primes decide.
+    if (fmpz_lll_d_heuristic(lattice, nullptr, context) == -1) {
+        fmpz_lll(lattice, nullptr, context);
+    }
     // No accident: the first vector short against the lattice's ordinary shortest vector
     // (about M^(k/(k+1))) and against the second reduced vector (a planted short vector leaves
     // the others about (M^k/|v|)^(1/k); a random lattice's are all alike). The second test is

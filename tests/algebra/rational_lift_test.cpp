@@ -218,6 +218,45 @@ TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
     }
 }
 
+// Lattices whose entries pass the range of doubles (2^1024): numbers sharing a 1 300-bit
+// denominator, with numerators as large, need a modulus of about 1 600 bits for eight of them
+// together. The lattice reduction in doubles with exact dot products (fmpz_lll_d_heuristic)
+// either copes with such entries or says it failed, and the full reduction then takes over:
+// either way the denominator is found, with no more primes than eight numbers need.
+TEST(RationalLift, SharedDenominatorPastTheRangeOfDoubles) {
+    std::mt19937_64 random(23);
+    const Integer denominator = random_integer(random, 390);  // about 1 300 bits
+    std::vector<Rational> truth;
+    for (int i = 0; i < 8; ++i) {
+        Rational q;
+        fmpz_set(fmpq_numref(q.get()), random_integer(random, 390).get());
+        fmpz_set(fmpq_denref(q.get()), denominator.get());
+        fmpq_canonicalise(q.get());
+        truth.push_back(q);
+    }
+    std::vector<LiftedNumber> numbers(truth.size());
+    RationalLift lift;
+    mp_limb_t p = (1u << 31) + 1;
+    std::optional<Integer> found;
+    while (!found && lift.primes() < 100) {
+        add_next_prime(lift, p, numbers,
+                       [&](std::size_t i, mp_limb_t q) { return residue_of(truth[i], q); });
+        RationalLift::Attempt attempt(lift);
+        found = attempt.common_denominator(pointers_to(numbers));
+    }
+    ASSERT_TRUE(found.has_value());
+    EXPECT_TRUE(fmpz_divisible(found->get(), denominator.get()) &&
+                fmpz_divisible(denominator.get(), found->get()));
+    // log N + log max(N, D)/8 + 32 ≈ 1 300 + 163 + 32 bits: 49 primes; one alone needs 84.
+    EXPECT_LE(lift.primes(), 52u);
+    EXPECT_GT(fmpz_bits(lift.modulus().get()), 1024u);
+    RationalLift::Attempt attempt(lift);
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        ASSERT_TRUE(attempt.reconstruct(numbers[i], &*found)) << i;
+        EXPECT_TRUE(fmpq_equal(numbers[i].value.get(), truth[i].get())) << i;
+    }
+}
+
 // The lattice's second test (its first vector well below the second): three numbers already
 // determined by the primes (small numerators over a small denominator) and one that is not (a
 // random residue) make a lattice whose two shortest vectors are alike and short enough for the
