@@ -228,11 +228,9 @@ TEST(RationalLift, SharedDenominatorPastTheRangeOfDoubles) {
     const Integer denominator = random_integer(random, 390);  // about 1 300 bits
     std::vector<Rational> truth;
     for (int i = 0; i < 8; ++i) {
-        Rational q;
-        fmpz_set(fmpq_numref(q.get()), random_integer(random, 390).get());
-        fmpz_set(fmpq_denref(q.get()), denominator.get());
-        fmpq_canonicalise(q.get());
-        truth.push_back(q);
+        truth.emplace_back();
+        fmpq_set_fmpz_frac(truth.back().get(), random_integer(random, 390).get(),
+                           denominator.get());
     }
     std::vector<LiftedNumber> numbers(truth.size());
     RationalLift lift;
