@@ -484,7 +484,10 @@ TEST(Modular, TheRecordedPrimeIsBelowTwoToThe24) {
         for (std::size_t i = 1; i < stats.primes_used.size(); ++i) {
             EXPECT_GE(stats.primes_used[i], (1u << 31) - (1u << 28) - 100000);
         }
-        EXPECT_EQ(stats.replayed, stats.primes_used.size() - 1);
+        // Every later prime replays the recording, unless its replay leaves it (a coefficient
+        // of the recorded rows vanishing modulo that prime, about one run in a hundred on
+        // cyclic-7): that prime is then set aside, or F4 runs afresh on it.
+        EXPECT_EQ(stats.replayed + stats.replays_refused, stats.primes_used.size() - 1);
     }
 }
 
