@@ -93,14 +93,39 @@ std::optional<std::vector<ModularPolynomial>> f4_replay(
     const MonomialLayout& layout, const PrimeField& field, const F4Options& options = {},
     F4Stats* stats = nullptr);
 
+// The bases of a replay modulo several primes (f4_replay_lanes), held as the reduced elements'
+// monomials once and their residues one a prime, until a prime's basis is asked for. Why not
+// the bases themselves: each would copy every monomial, and eight of them at once were most
+// of a batch's memory, touched for the first time and freed almost at once (katsura-10: 4.6 %
+// of the run clearing fresh pages). Asked for one at a time, the bases reuse the same memory.
+class LaneBases {
+  public:
+    // Primes asked for (the bases that exist and those that do not).
+    std::size_t size() const { return alive_.size(); }
+    // Whether prime i stayed with the recording (its basis exists).
+    bool has(std::size_t i) const { return alive_[i] != 0; }
+    // The monic reduced basis modulo prime i, sorted by ascending leading monomial, as
+    // f4_replay gives it; nothing when that prime left the recording.
+    std::optional<std::vector<ModularPolynomial>> basis(std::size_t i) const;
+
+  private:
+    friend class LaneBasesBuilder;
+    std::size_t words_ = 0;
+    std::size_t width_ = 0;                 // residues a term: the lanes, at least size()
+    std::vector<char> alive_;               // per prime
+    std::vector<std::size_t> first_;        // per element, its first term (elements + 1)
+    std::vector<std::uint64_t> monomials_;  // words_ a term, leading term first per element
+    std::vector<std::uint32_t> residues_;   // width_ a tail term (leading coefficients are 1)
+};
+
 // f4_replay modulo several primes at once: generators[i] are the inputs modulo primes[i]
 // (odd primes below 2^31). The matrices are the same for every prime, so each entry holds one
 // residue a prime and each pivot subtraction is one vector multiply-add for all of them
 // (groebner/detail/residue_lanes.h). Per prime, the basis or nothing (that prime left the
 // recording: run f4 for it).
-std::vector<std::optional<std::vector<ModularPolynomial>>> f4_replay_lanes(
-    const F4Trace& trace, std::span<const std::vector<ModularPolynomial>> generators,
-    std::span<const std::uint32_t> primes, const MonomialLayout& layout,
-    const F4Options& options = {});
+LaneBases f4_replay_lanes(const F4Trace& trace,
+                          std::span<const std::vector<ModularPolynomial>> generators,
+                          std::span<const std::uint32_t> primes, const MonomialLayout& layout,
+                          const F4Options& options = {});
 
 }  // namespace locus::algebra::modular

@@ -8,6 +8,7 @@
 // a generator vanishing) drops out of the batch; the others go on.
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <string>
 
 #include <flint/ulong_extras.h>
@@ -18,6 +19,72 @@
 #include "algebra/modular/f4.h"
 
 namespace locus::algebra::modular {
+
+// Fills a LaneBases (f4.h) element by element.
+class LaneBasesBuilder {
+  public:
+    LaneBasesBuilder(std::size_t primes, std::size_t words, std::size_t width) {
+        bases_.words_ = words;
+        bases_.width_ = width;
+        bases_.alive_.assign(primes, 0);
+        bases_.first_.push_back(0);
+    }
+    static LaneBases none(std::size_t primes) {
+        LaneBases bases;
+        bases.alive_.assign(primes, 0);
+        return bases;
+    }
+    // An element: its leading monomial (column `leading` of `column_monomials`, coefficient 1)
+    // and its tail, `residues` holding width residues a column.
+    void element(const std::uint64_t* column_monomials, std::uint32_t leading,
+                 const std::vector<std::uint32_t>& tail_columns, const std::uint32_t* residues) {
+        const std::size_t words = bases_.words_, width = bases_.width_;
+        const std::uint64_t* m = column_monomials + static_cast<std::size_t>(leading) * words;
+        bases_.monomials_.insert(bases_.monomials_.end(), m, m + words);
+        bases_.residues_.insert(bases_.residues_.end(), width, 1);
+        for (std::size_t t = 0; t < tail_columns.size(); ++t) {
+            m = column_monomials + static_cast<std::size_t>(tail_columns[t]) * words;
+            bases_.monomials_.insert(bases_.monomials_.end(), m, m + words);
+        }
+        bases_.residues_.insert(bases_.residues_.end(), residues,
+                                residues + tail_columns.size() * width);
+        bases_.first_.push_back(bases_.first_.back() + 1 + tail_columns.size());
+    }
+    LaneBases finish(const std::vector<char>& alive) {
+        std::copy_n(alive.begin(), bases_.alive_.size(), bases_.alive_.begin());
+        return std::move(bases_);
+    }
+
+  private:
+    LaneBases bases_;
+};
+
+std::optional<std::vector<ModularPolynomial>> LaneBases::basis(std::size_t i) const {
+    if (!has(i)) {
+        return std::nullopt;
+    }
+    std::vector<ModularPolynomial> out(first_.size() - 1);
+    for (std::size_t e = 0; e + 1 < first_.size(); ++e) {
+        // Sized once: grown term by term, the copies and allocations were a third of
+        // katsura-10's replays.
+        std::size_t terms = 0;
+        for (std::size_t t = first_[e]; t < first_[e + 1]; ++t) {
+            terms += residues_[t * width_ + i] != 0 ? 1 : 0;
+        }
+        ModularPolynomial& poly = out[e];
+        poly.coefficients.reserve(terms);
+        poly.monomials.reserve(terms * words_);
+        for (std::size_t t = first_[e]; t < first_[e + 1]; ++t) {
+            const std::uint32_t residue = residues_[t * width_ + i];
+            if (residue != 0) {
+                poly.coefficients.push_back(residue);
+                const std::uint64_t* m = monomials_.data() + t * words_;
+                poly.monomials.insert(poly.monomials.end(), m, m + words_);
+            }
+        }
+    }
+    return out;
+}
 
 namespace {
 
@@ -51,15 +118,13 @@ class LaneReplay {
           factor_(lanes_.size()),
           quotients_(lanes_.size()) {}
 
-    std::vector<std::optional<std::vector<ModularPolynomial>>> run(
-        std::span<const std::vector<ModularPolynomial>> generators) {
-        std::vector<std::optional<std::vector<ModularPolynomial>>> out(count_);
+    LaneBases run(std::span<const std::vector<ModularPolynomial>> generators) {
         if (trace_.final_elements.empty() || !load_generators(generators)) {
-            return out;
+            return LaneBasesBuilder::none(count_);
         }
         for (const F4Trace::Step& step : trace_.steps) {
             if (!replay_step(step)) {
-                return out;
+                return LaneBasesBuilder::none(count_);
             }
         }
         return reduced_bases();
@@ -281,9 +346,9 @@ class LaneReplay {
         return any_alive();
     }
 
-    // The last recorded matrix reduces the minimal elements' tails; each live lane's reduced
-    // basis, sorted by ascending leading monomial.
-    std::vector<std::optional<std::vector<ModularPolynomial>>> reduced_bases() {
+    // The last recorded matrix reduces the minimal elements' tails: the reduced bases of the
+    // live lanes, elements by ascending leading monomial (LaneBases).
+    LaneBases reduced_bases() {
         const std::size_t k = width();
         const F4Trace::Step& step = trace_.final_step;
         const std::size_t columns = step.column_monomials.size() / words_;
@@ -291,15 +356,23 @@ class LaneReplay {
         std::vector<std::int64_t> pivot_of_column(columns, -1);
         for (const F4Trace::Row& r : step.reducers) {
             if (r.element >= elements_.size()) {
-                return std::vector<std::optional<std::vector<ModularPolynomial>>>(count_);
+                return LaneBasesBuilder::none(count_);
             }
             pivot_of_column[r.columns.front()] = static_cast<std::int64_t>(pivots.size());
             pivots.push_back(row_of(r));
         }
+        // Columns descend with the monomials: ascending leading monomials are descending
+        // leading columns. The pivots are the recorded rows, which no tail reduction changes,
+        // so the elements can be reduced in that order.
+        std::vector<std::size_t> order(trace_.final_elements.size());
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return pivots[a].columns[0] > pivots[b].columns[0];
+        });
         acc_.assign(columns * k, 0);
-        std::vector<std::vector<ModularPolynomial>> bases(count_);
+        LaneBasesBuilder out(count_, words_, k);
         LaneRow tail;
-        for (std::size_t e = 0; e < trace_.final_elements.size(); ++e) {
+        for (const std::size_t e : order) {
             check_deadline();
             const Pivot& row = pivots[e];
             if (row.size > 1) {
@@ -308,45 +381,10 @@ class LaneReplay {
             } else {
                 tail = {};
             }
-            const std::uint64_t* leading = step.column_monomials.data() + row.columns[0] * words_;
-            for (std::size_t l = 0; l < count_; ++l) {
-                if (!alive_[l]) {
-                    continue;
-                }
-                // Sized once: grown term by term, the copies and allocations were a third
-                // of katsura-10's replays.
-                std::size_t terms = 1;
-                for (std::size_t t = 0; t < tail.columns.size(); ++t) {
-                    terms += tail.residues[t * k + l] != 0 ? 1 : 0;
-                }
-                ModularPolynomial poly;
-                poly.coefficients.reserve(terms);
-                poly.monomials.reserve(terms * words_);
-                poly.coefficients.push_back(1);
-                poly.monomials.assign(leading, leading + words_);
-                for (std::size_t t = 0; t < tail.columns.size(); ++t) {
-                    const std::uint32_t residue = tail.residues[t * k + l];
-                    if (residue != 0) {
-                        poly.coefficients.push_back(residue);
-                        const std::uint64_t* m =
-                            step.column_monomials.data() + tail.columns[t] * words_;
-                        poly.monomials.insert(poly.monomials.end(), m, m + words_);
-                    }
-                }
-                bases[l].push_back(std::move(poly));
-            }
+            out.element(step.column_monomials.data(), row.columns[0], tail.columns,
+                        tail.residues.data());
         }
-        std::vector<std::optional<std::vector<ModularPolynomial>>> out(count_);
-        for (std::size_t l = 0; l < count_; ++l) {
-            if (alive_[l]) {
-                std::sort(bases[l].begin(), bases[l].end(),
-                          [&](const ModularPolynomial& a, const ModularPolynomial& b) {
-                              return layout_.compare(a.monomials.data(), b.monomials.data()) < 0;
-                          });
-                out[l] = std::move(bases[l]);
-            }
-        }
-        return out;
+        return out.finish(alive_);
     }
 
     const F4Trace& trace_;
@@ -362,9 +400,10 @@ class LaneReplay {
 
 }  // namespace
 
-std::vector<std::optional<std::vector<ModularPolynomial>>> f4_replay_lanes(
-    const F4Trace& trace, std::span<const std::vector<ModularPolynomial>> generators,
-    std::span<const std::uint32_t> primes, const MonomialLayout& layout, const F4Options& options) {
+LaneBases f4_replay_lanes(const F4Trace& trace,
+                          std::span<const std::vector<ModularPolynomial>> generators,
+                          std::span<const std::uint32_t> primes, const MonomialLayout& layout,
+                          const F4Options& options) {
     if (generators.size() != primes.size()) {
         throw std::invalid_argument("f4_replay_lanes: one list of generators a prime");
     }

@@ -362,7 +362,11 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         std::uint32_t p;
         std::vector<ModularPolynomial> reduced, reduced_grevlex;
         bool replay_tried = false;
-        std::optional<std::vector<ModularPolynomial>> replayed;
+        // Its batch's bases (shared with the batch's other primes) and its lane there: the
+        // basis is made from them when this prime's turn comes (LaneBases, f4.h).
+        std::shared_ptr<const modular::LaneBases> batch;
+        std::size_t lane = 0;
+        bool replayed() const { return batch != nullptr && batch->has(lane); }
     };
     std::deque<Prepared> ready;
     // The next prime that divides no leading coefficient or denominator of the inputs, with
@@ -373,7 +377,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                 static_cast<std::uint32_t>(first_draw ? unreduced_primes.next() : primes.next());
             first_draw = false;
             const PrimeField field{p};
-            Prepared item{p, {}, {}, false, std::nullopt};
+            Prepared item{p, {}, {}, false, nullptr, 0};
             bool usable = true;
             for (const Polynomial& f : inputs) {
                 // A prime that divides a leading coefficient changes the input's leading
@@ -438,12 +442,14 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                         batch_inputs.push_back(via_grevlex ? ready[i].reduced_grevlex
                                                            : ready[i].reduced);
                     }
-                    auto replayed = modular::f4_replay_lanes(
-                        *trace, batch_inputs, batch_primes,
-                        via_grevlex ? grevlex_ring->layout() : layout, f4_options);
+                    auto replayed =
+                        std::make_shared<const modular::LaneBases>(modular::f4_replay_lanes(
+                            *trace, batch_inputs, batch_primes,
+                            via_grevlex ? grevlex_ring->layout() : layout, f4_options));
                     for (std::size_t i = begin; i < end; ++i) {
                         ready[i].replay_tried = true;
-                        ready[i].replayed = std::move(replayed[i - begin]);
+                        ready[i].batch = replayed;
+                        ready[i].lane = i - begin;
                     }
                 };
                 if (group_count == 1) {
@@ -467,7 +473,7 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         // prime (cyclic-8: 2 s, against 0.14 s a replay), and the lift needs its residues no
         // more than any other prime's. Only when refusals are common, which is what an unlucky
         // first prime looks like, does F4 run afresh (a new group for the vote).
-        if (item.replay_tried && !item.replayed && !confirming &&
+        if (item.replay_tried && !item.replayed() && !confirming &&
             s.replays_refused_set_aside < 1 + s.replayed / 8) {
             ++s.replays_refused;
             ++s.replays_refused_set_aside;
@@ -480,11 +486,13 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
         auto run_f4 = [&](const std::vector<ModularPolynomial>& polys, const MonomialLayout& l) {
             bool record = tracing && !trace;
             if (item.replay_tried) {
-                if (item.replayed && !confirming) {
+                if (item.replayed() && !confirming) {
                     ++s.replayed;
-                    return std::move(*item.replayed);
+                    std::vector<ModularPolynomial> basis = *item.batch->basis(item.lane);
+                    item.batch.reset();  // the last prime of the batch frees it
+                    return basis;
                 }
-                if (!item.replayed) {
+                if (!item.replayed()) {
                     ++s.replays_refused;
                     // Refused beyond the primes that may be set aside: most likely the recording
                     // itself left the common path — a coefficient of one of its many

@@ -633,16 +633,17 @@ TEST(Modular, ReplayOnLanesEqualsTheReplayOfEachPrime) {
         for (const std::uint32_t p : primes) {
             inputs.push_back(modulo(ideal.generators, p));
         }
-        const auto batch = modular::f4_replay_lanes(trace, inputs, primes, layout);
+        const modular::LaneBases batch = modular::f4_replay_lanes(trace, inputs, primes, layout);
         ASSERT_EQ(batch.size(), primes.size());
         for (std::size_t i = 0; i < primes.size(); ++i) {
             const auto one = modular::f4_replay(trace, inputs[i], layout, {primes[i]});
             ASSERT_TRUE(one.has_value()) << name << " prime " << primes[i];
-            ASSERT_TRUE(batch[i].has_value()) << name << " prime " << primes[i];
-            ASSERT_EQ(batch[i]->size(), one->size()) << name;
+            const auto lane = batch.basis(i);
+            ASSERT_TRUE(batch.has(i) && lane.has_value()) << name << " prime " << primes[i];
+            ASSERT_EQ(lane->size(), one->size()) << name;
             for (std::size_t e = 0; e < one->size(); ++e) {
-                EXPECT_EQ((*batch[i])[e].monomials, (*one)[e].monomials) << name;
-                EXPECT_EQ((*batch[i])[e].coefficients, (*one)[e].coefficients) << name;
+                EXPECT_EQ((*lane)[e].monomials, (*one)[e].monomials) << name;
+                EXPECT_EQ((*lane)[e].coefficients, (*one)[e].coefficients) << name;
             }
         }
     }
@@ -665,10 +666,10 @@ TEST(Modular, ReplayRefusesAPrimeOnWhichTheComputationDiffers) {
     for (const std::uint32_t q : batch_primes) {
         inputs.push_back(modulo(ideal.generators, q));
     }
-    const auto batch = modular::f4_replay_lanes(trace, inputs, batch_primes, layout);
-    EXPECT_TRUE(batch[0].has_value());
-    EXPECT_FALSE(batch[1].has_value());
-    EXPECT_TRUE(batch[2].has_value());
+    const modular::LaneBases batch = modular::f4_replay_lanes(trace, inputs, batch_primes, layout);
+    EXPECT_TRUE(batch.has(0) && batch.basis(0).has_value());
+    EXPECT_FALSE(batch.has(1) || batch.basis(1).has_value());
+    EXPECT_TRUE(batch.has(2) && batch.basis(2).has_value());
     // The multi-modular driver then sets that prime aside, and the lift still gives the
     // rational basis.
     ModularOptions options;
