@@ -115,7 +115,7 @@ class LaneBases {
     std::vector<char> alive_;               // per prime
     std::vector<std::size_t> first_;        // per element, its first term (elements + 1)
     std::vector<std::uint64_t> monomials_;  // words_ a term, leading term first per element
-    std::vector<std::uint32_t> residues_;   // width_ a tail term (leading coefficients are 1)
+    std::vector<std::uint32_t> residues_;   // width_ a term (a leading term's are all 1)
 };
 
 // f4_replay modulo several primes at once: generators[i] are the inputs modulo primes[i]

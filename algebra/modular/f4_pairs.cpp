@@ -101,21 +101,12 @@ void F4Engine::add_element(ModularPolynomial poly, std::uint32_t sugar) {
         pairs_.push_back({g, h, std::vector<std::uint64_t>(lcm, lcm + words_), degree});
     }
     // The elements h makes redundant leave the live ones, and h joins them.
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < live_.index.size(); ++k) {
-        const std::uint32_t g = live_.index[k];
-        if (layout_.divides(lead(h), lead(g))) {
-            basis_[g].redundant = true;
-            continue;
-        }
-        live_.index[kept] = g;
-        live_.mask[kept] = live_.mask[k];
-        std::copy_n(live_.lead.data() + k * words_, words_, live_.lead.data() + kept * words_);
-        ++kept;
-    }
-    live_.index.resize(kept);
-    live_.mask.resize(kept);
-    live_.lead.resize(kept * words_);
+    live_.erase_if(
+        [&](std::uint32_t g) {
+            basis_[g].redundant = layout_.divides(lead(h), lead(g));
+            return basis_[g].redundant;
+        },
+        words_);
     live_.add(h, basis_[h].mask, lead(h), words_);
 }
 

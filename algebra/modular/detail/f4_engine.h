@@ -5,6 +5,7 @@
 // replay. Internal to algebra/modular/.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -248,6 +249,23 @@ class F4Engine {
             index.clear();
             mask.clear();
             lead.clear();
+        }
+        // Drops the elements e with leaves(e), keeping the others in order.
+        template <typename Leaves>
+        void erase_if(Leaves leaves, std::size_t words) {
+            std::size_t kept = 0;
+            for (std::size_t k = 0; k < index.size(); ++k) {
+                if (leaves(index[k])) {
+                    continue;
+                }
+                index[kept] = index[k];
+                mask[kept] = mask[k];
+                std::copy_n(lead.data() + k * words, words, lead.data() + kept * words);
+                ++kept;
+            }
+            index.resize(kept);
+            mask.resize(kept);
+            lead.resize(kept * words);
         }
     };
     LiveElements live_;
