@@ -59,9 +59,14 @@ void print_modular_stats(const algebra::ModularStats& s) {
         if (work.lanes > 0) {
             std::fprintf(stderr,
                          " on residues modulo %zu primes (%s kernels; %zu reductions begun again "
-                         "on more, %zu rebuilds in full)",
+                         "on more, %zu rebuilds in full; %zu reducer terms on %.1f lanes on "
+                         "average, %zu columns)",
                          work.lanes, algebra::certification_kernels(), work.lane_restarts,
-                         work.rebuilds);
+                         work.rebuilds, work.reducer_terms,
+                         work.reducer_terms > 0 ? static_cast<double>(work.lane_terms) /
+                                                      static_cast<double>(work.reducer_terms)
+                                                : 0.0,
+                         work.columns);
         }
         std::fprintf(stderr, "%s\n",
                      work.exact_fallback

@@ -249,6 +249,9 @@ CertificationWork& CertificationWork::operator+=(const CertificationWork& other)
     lanes = std::max(lanes, other.lanes);
     lane_restarts += other.lane_restarts;
     rebuilds += other.rebuilds;
+    reducer_terms += other.reducer_terms;
+    lane_terms += other.lane_terms;
+    columns = std::max(columns, other.columns);
     exact_fallback = exact_fallback || other.exact_fallback;
     return *this;
 }

@@ -387,6 +387,26 @@ TEST(ZeroReducers, ResidueAndGmpReducersMakeTheSameSteps) {
     EXPECT_GT(narrow.lanes, 8u);
 }
 
+// The work counts the certification reports (`locus groebner --stats`): the same steps on
+// 32 and on 64 lanes go through the same reducer terms, each counted once a lane, and number
+// the same columns.
+TEST(ZeroReducers, TermCountsDoNotDependOnTheLanes) {
+    const IdealFile ideal =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/katsura6.ideal"));
+    const Certification c =
+        certification_of(modular_groebner(ideal.generators).basis, ideal.generators);
+    ResidueZeroReducer::Statistics on32, on64;
+    EXPECT_EQ(compare_reducers(c, 32, "katsura6 on 32 lanes", &on32), 0u);
+    EXPECT_EQ(compare_reducers(c, 64, "katsura6 on 64 lanes", &on64), 0u);
+    ASSERT_EQ(on32.restarts + on64.restarts, 0u);
+    EXPECT_GT(on32.reducer_terms, 0u);
+    EXPECT_EQ(on32.reducer_terms, on64.reducer_terms);
+    EXPECT_EQ(on32.lane_terms, 32 * on32.reducer_terms);
+    EXPECT_EQ(on64.lane_terms, 64 * on64.reducer_terms);
+    EXPECT_GT(on32.columns, 0u);
+    EXPECT_EQ(on32.columns, on64.columns);
+}
+
 TEST(ZeroReducers, EveryKernelCertifiesTheSameWay) {
     KernelGuard guard;
     const IdealFile ideal =

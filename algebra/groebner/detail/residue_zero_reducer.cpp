@@ -380,6 +380,8 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
                                   highest_bound_};
         lanes::add_scaled_rows_bounded(level().values.data(), columns, length, el.rows.data(),
                                        multiplier_lanes_.data(), quotients_.data(), primes, raise);
+        statistics_.reducer_terms += length;
+        statistics_.lane_terms += length * width;
         highest_bound_ = raise.highest;
         for (std::size_t k = 0; k < raise.fresh_count; ++k) {
             heap_.push_back(fresh_[k]);

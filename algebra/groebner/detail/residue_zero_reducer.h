@@ -90,8 +90,16 @@ class ResidueZeroReducer {
         std::size_t lanes = 0;     // residues per integer now
         std::size_t restarts = 0;  // reductions begun again on more lanes
         std::size_t rebuilds = 0;  // times the pending columns were rebuilt in full
+        // The reducers' terms the steps went through, and the same counted once a lane: the
+        // work and the data the row kernel streams.
+        std::size_t reducer_terms = 0, lane_terms = 0;
+        std::size_t columns = 0;  // numbered (columns())
     };
-    const Statistics& statistics() const { return statistics_; }
+    Statistics statistics() const {
+        Statistics s = statistics_;
+        s.columns = columns();
+        return s;
+    }
 
   private:
     // What the reducer knows of a basis element's integers, independent of the lanes.

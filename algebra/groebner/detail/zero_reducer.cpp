@@ -55,12 +55,15 @@ bool ZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t j,
 }
 
 CertificationWork ZeroReducer::statistics() const {
-    const ResidueZeroReducer::Statistics& r =
+    const ResidueZeroReducer::Statistics r =
         residue_ ? residue_->statistics() : residue_statistics_;
     CertificationWork work;
     work.lanes = residue_ ? r.lanes : 0;
     work.lane_restarts = r.restarts;
     work.rebuilds = r.rebuilds;
+    work.reducer_terms = r.reducer_terms;
+    work.lane_terms = r.lane_terms;
+    work.columns = r.columns;
     work.exact_fallback = exact_ != nullptr;
     return work;
 }
