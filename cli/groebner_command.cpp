@@ -60,12 +60,15 @@ void print_modular_stats(const algebra::ModularStats& s) {
             std::fprintf(stderr,
                          " on residues modulo %zu primes (%s kernels; %zu reductions begun again "
                          "on more, %zu rebuilds in full; %zu reducer terms on %.1f lanes on "
-                         "average, %zu columns)",
+                         "average, each read for %.1f reductions, %zu columns)",
                          work.lanes, algebra::certification_kernels(), work.lane_restarts,
                          work.rebuilds, work.reducer_terms,
                          work.reducer_terms > 0 ? static_cast<double>(work.lane_terms) /
                                                       static_cast<double>(work.reducer_terms)
                                                 : 0.0,
+                         work.row_terms > 0 ? static_cast<double>(work.reducer_terms) /
+                                                  static_cast<double>(work.row_terms)
+                                            : 0.0,
                          work.columns);
         }
         std::fprintf(stderr, "%s\n",

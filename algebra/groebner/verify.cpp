@@ -1,6 +1,7 @@
 #include "algebra/groebner/verify.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -111,46 +112,71 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         inputs.push_back(detail::to_integer_polynomial(g));
     }
     const std::size_t jobs = inputs.size() + pairs.size();
-    auto job_reduces = [&](detail::ZeroReducer& r, std::size_t k,
-                           detail::ReductionCounts& job_steps) {
+    std::vector<detail::ZeroReducer::Job> all_jobs(jobs);
+    for (std::size_t k = 0; k < jobs; ++k) {
         if (k < inputs.size()) {
-            return r.reduces_to_zero(inputs[k], job_steps);
+            all_jobs[k].polynomial = &inputs[k];
+        } else {
+            const detail::CriticalPair& pair = pairs[k - inputs.size()];
+            all_jobs[k] = {nullptr, pair.first, pair.second, pair.lcm.data()};
         }
-        const detail::CriticalPair& pair = pairs[k - inputs.size()];
-        return r.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(), job_steps);
+    }
+    // Consecutive jobs are reduced together (ZeroReducer::reduce_together): the pairs come in
+    // the order of their lcms' degrees, and those of a degree share most of their reducer rows.
+    const std::size_t groups =
+        (jobs + detail::ZeroReducer::kGroup - 1) / detail::ZeroReducer::kGroup;
+    // Reduces group g; returns its first job that does not reduce to zero, or `jobs`.
+    auto group_fails = [&](detail::ZeroReducer& r, std::size_t g,
+                           detail::ReductionCounts& group_steps) {
+        const std::size_t from = g * detail::ZeroReducer::kGroup;
+        const std::size_t to = std::min(jobs, from + detail::ZeroReducer::kGroup);
+        const std::span<const detail::ZeroReducer::Job> group(all_jobs.data() + from, to - from);
+        std::array<bool, detail::ZeroReducer::kGroup> zero{};
+        std::array<detail::ReductionCounts, detail::ZeroReducer::kGroup> job_counts{};
+        r.reduce_together(group, std::span(zero.data(), group.size()),
+                          std::span(job_counts.data(), group.size()));
+        std::size_t failed = jobs;
+        for (std::size_t k = 0; k < group.size(); ++k) {
+            group_steps.steps += job_counts[k].steps;
+            if (!zero[k] && failed == jobs) {
+                failed = from + k;
+            }
+        }
+        return failed;
     };
     detail::ReductionCounts steps;
     try {
         const auto add_statistics = [&](const detail::ZeroReducer& r) {
             check.work += r.statistics();
         };
-        // Progress after each pair: one report at a time; a thread that finds another reporting
-        // goes on without waiting (so the last pair's report may be skipped: the count is
+        // Progress after each group: one report at a time; a thread that finds another
+        // reporting goes on without waiting (so the last report may be skipped: the count is
         // reported once more when all are done).
         std::atomic<std::size_t> pairs_done{0};
         std::mutex reporting;
-        const auto report = [&](std::size_t k) {
-            if (k < inputs.size()) {
+        const auto report = [&](std::size_t g) {
+            const std::size_t from = g * detail::ZeroReducer::kGroup;
+            const std::size_t to = std::min(jobs, from + detail::ZeroReducer::kGroup);
+            const std::size_t first_pair = std::max(from, inputs.size());
+            if (to <= first_pair) {
                 return;
             }
-            const std::size_t done = ++pairs_done;
+            const std::size_t done = pairs_done += to - first_pair;
             if (progress && reporting.try_lock()) {
                 progress(done, pairs.size());
                 reporting.unlock();
             }
         };
         std::size_t failed = jobs;  // the first job, in order, that does not reduce
-        if (threads <= 1 || jobs < 2) {
+        if (threads <= 1 || groups < 2) {
             // One thread's reducer, built here only: on several threads each builds its own
             // below, and one built here as well cost a serial 0.03–0.04 s on katsura-10 (the
             // residues of every element in every lane) before the threads began.
             detail::ZeroReducer reducer(layout, elements);
             reducer.set_deadline(deadline);
-            for (std::size_t k = 0; k < jobs && failed == jobs; ++k) {
-                if (!job_reduces(reducer, k, steps)) {
-                    failed = k;
-                }
-                report(k);
+            for (std::size_t g = 0; g < groups && failed == jobs; ++g) {
+                failed = group_fails(reducer, g, steps);
+                report(g);
             }
             add_statistics(reducer);
         } else {
@@ -166,21 +192,23 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             tbb::task_arena arena(threads);
             arena.execute([&] {
                 tbb::parallel_for(
-                    tbb::blocked_range<std::size_t>(0, jobs, 1),
+                    tbb::blocked_range<std::size_t>(0, groups, 1),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                         detail::ZeroReducer& local = *reducers.local();
                         detail::ReductionCounts& local_steps = thread_steps.local();
-                        for (std::size_t k = range.begin(); k < range.end(); ++k) {
-                            // Jobs after a known failure need no check.
-                            if (k > first_failure.load(std::memory_order_relaxed)) {
+                        for (std::size_t g = range.begin(); g < range.end(); ++g) {
+                            // Groups after a known failure need no check.
+                            if (g * detail::ZeroReducer::kGroup >
+                                first_failure.load(std::memory_order_relaxed)) {
                                 return;
                             }
-                            if (!job_reduces(local, k, local_steps)) {
+                            const std::size_t k = group_fails(local, g, local_steps);
+                            if (k < jobs) {
                                 std::size_t seen = first_failure.load();
                                 while (k < seen && !first_failure.compare_exchange_weak(seen, k)) {
                                 }
                             }
-                            report(k);
+                            report(g);
                         }
                     });
             });
@@ -251,6 +279,7 @@ CertificationWork& CertificationWork::operator+=(const CertificationWork& other)
     rebuilds += other.rebuilds;
     reducer_terms += other.reducer_terms;
     lane_terms += other.lane_terms;
+    row_terms += other.row_terms;
     columns = std::max(columns, other.columns);
     exact_fallback = exact_fallback || other.exact_fallback;
     return *this;

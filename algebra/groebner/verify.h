@@ -26,8 +26,9 @@ namespace locus::algebra {
 struct CertificationWork {
     std::size_t reduction_steps = 0, lanes = 0, lane_restarts = 0, rebuilds = 0;
     // On residues: the reducers' terms the steps went through, the same counted once a lane,
-    // and the columns (monomials) numbered by the largest of the threads' reducers.
-    std::size_t reducer_terms = 0, lane_terms = 0, columns = 0;
+    // the terms read (once for all the reductions of a group that take a row at the same
+    // time), and the columns (monomials) numbered by the largest of the threads' reducers.
+    std::size_t reducer_terms = 0, lane_terms = 0, row_terms = 0, columns = 0;
     bool exact_fallback = false;
     // Steps, restarts, rebuilds and terms add up; lanes and columns are the most used.
     CertificationWork& operator+=(const CertificationWork& other);

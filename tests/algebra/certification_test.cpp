@@ -297,31 +297,41 @@ Certification certification_of(const std::vector<Polynomial>& basis,
 }
 
 // Every generator and pair through both reducers: the same verdicts after the same number of
-// steps. Returns how many were not zero.
+// steps. The residue reducer takes the jobs `group` at a time (reduce_together), the GMP one
+// alone. Returns how many were not zero.
 std::size_t compare_reducers(const Certification& c, std::size_t lanes, const std::string& what,
-                             ResidueZeroReducer::Statistics* statistics = nullptr) {
+                             ResidueZeroReducer::Statistics* statistics = nullptr,
+                             std::size_t group = 1) {
     const MonomialLayout& layout = c.ring->layout();
     // Forced lanes are kept for every reduction: narrow ones then start again and rebuild often.
     ResidueZeroReducer residue(layout, c.elements, lanes, lanes == 0);
     ExactZeroReducer exact(layout, c.elements);
-    std::size_t nonzero = 0;
-    for (std::size_t k = 0; k < c.generators.size(); ++k) {
-        ReductionCounts r, e;
-        const bool by_residues = residue.reduces_to_zero(c.generators[k], r);
-        EXPECT_EQ(by_residues, exact.reduces_to_zero(c.generators[k], e)) << what << " input " << k;
-        EXPECT_EQ(r.steps, e.steps) << what << " input " << k;
-        nonzero += by_residues ? 0 : 1;
+    std::vector<ResidueZeroReducer::Job> jobs;
+    for (const IntegerPolynomial& g : c.generators) {
+        jobs.push_back({&g, 0, 0, nullptr});
     }
-    for (std::size_t k = 0; k < c.pairs.size(); ++k) {
-        const CriticalPair& pair = c.pairs[k];
-        ReductionCounts r, e;
-        const bool by_residues =
-            residue.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(), r);
-        EXPECT_EQ(by_residues,
-                  exact.s_polynomial_reduces_to_zero(pair.first, pair.second, pair.lcm.data(), e))
-            << what << " pair " << k;
-        EXPECT_EQ(r.steps, e.steps) << what << " pair " << k;
-        nonzero += by_residues ? 0 : 1;
+    for (const CriticalPair& pair : c.pairs) {
+        jobs.push_back({nullptr, pair.first, pair.second, pair.lcm.data()});
+    }
+    std::size_t nonzero = 0;
+    for (std::size_t from = 0; from < jobs.size(); from += group) {
+        const std::size_t n = std::min(group, jobs.size() - from);
+        std::vector<ResidueZeroReducer::Verdict> verdicts(n);
+        std::vector<ReductionCounts> counts(n);
+        residue.reduce_together(std::span(jobs.data() + from, n), verdicts, counts);
+        for (std::size_t k = 0; k < n; ++k) {
+            const ResidueZeroReducer::Job& job = jobs[from + k];
+            ReductionCounts e;
+            const bool by_gmp =
+                job.polynomial != nullptr
+                    ? exact.reduces_to_zero(*job.polynomial, e)
+                    : exact.s_polynomial_reduces_to_zero(job.first, job.second, job.lcm, e);
+            EXPECT_NE(verdicts[k], ResidueZeroReducer::Verdict::too_wide) << what;
+            const bool by_residues = verdicts[k] == ResidueZeroReducer::Verdict::zero;
+            EXPECT_EQ(by_residues, by_gmp) << what << " job " << from + k;
+            EXPECT_EQ(counts[k].steps, e.steps) << what << " job " << from + k;
+            nonzero += by_residues ? 0 : 1;
+        }
     }
     if (statistics != nullptr) {
         *statistics = residue.statistics();
@@ -341,6 +351,22 @@ std::vector<Polynomial> with_coefficient_changed(std::vector<Polynomial> basis, 
     }
     g = changed;
     return basis;
+}
+
+// Three dense quadrics with six-digit coefficients: the basis' own coefficients (hundreds of
+// bits) do not fit 8 lanes, so reductions on 8 must start again on more.
+Certification dense_quadrics() {
+    std::mt19937_64 rng(19);
+    std::string text = "vars: x,y,z\norder: grevlex\n";
+    for (int f = 0; f < 3; ++f) {
+        for (const char* m : {"x^2", "x*y", "x*z", "y^2", "y*z", "z^2", "x", "y", "z", "1"}) {
+            // Appended piece by piece: GCC 12 warns (-Wrestrict) on the chained operator+.
+            text.append("+").append(std::to_string(100000 + rng() % 900000)).append("*").append(m);
+        }
+        text += "\n";
+    }
+    const IdealFile dense = parse_ideal_file(text);
+    return certification_of(modular_groebner(dense.generators).basis, dense.generators);
 }
 
 TEST(ZeroReducers, ResidueAndGmpReducersMakeTheSameSteps) {
@@ -366,25 +392,45 @@ TEST(ZeroReducers, ResidueAndGmpReducersMakeTheSameSteps) {
         }
     }
     EXPECT_GT(rebuilds, 0u);
-    // Three dense quadrics with six-digit coefficients: the basis' own coefficients (hundreds
-    // of bits) do not fit 8 lanes, so reductions must start again on more.
-    std::mt19937_64 rng(19);
-    std::string text = "vars: x,y,z\norder: grevlex\n";
-    for (int f = 0; f < 3; ++f) {
-        for (const char* m : {"x^2", "x*y", "x*z", "y^2", "y*z", "z^2", "x", "y", "z", "1"}) {
-            // Appended piece by piece: GCC 12 warns (-Wrestrict) on the chained operator+.
-            text.append("+").append(std::to_string(100000 + rng() % 900000)).append("*").append(m);
-        }
-        text += "\n";
-    }
-    const IdealFile dense = parse_ideal_file(text);
-    const GroebnerResult r = modular_groebner(dense.generators);
-    const Certification c = certification_of(r.basis, dense.generators);
+    const Certification c = dense_quadrics();
     ASSERT_GT(ResidueZeroReducer::initial_lanes(c.elements), 8u);
     ResidueZeroReducer::Statistics narrow;
     EXPECT_EQ(compare_reducers(c, 8, "dense quadrics on 8 lanes", &narrow), 0u);
     EXPECT_GT(narrow.restarts, 0u);
     EXPECT_GT(narrow.lanes, 8u);
+}
+
+// Jobs reduced together make each its own steps, the same as alone and as on GMP integers,
+// including those that rebuild their values or must start again on more lanes while the others
+// go on; and they share reducer rows.
+TEST(ZeroReducers, JobsReducedTogetherMakeTheirOwnSteps) {
+    std::size_t rebuilds = 0;
+    for (const char* name : {"cyclic5", "katsura6", "eco6", "noon4", "katsura7"}) {
+        const IdealFile ideal = parse_ideal_file(
+            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        const GroebnerResult r = modular_groebner(ideal.generators);
+        const Certification good = certification_of(r.basis, ideal.generators);
+        const Certification bad = certification_of(
+            with_coefficient_changed(r.basis, r.basis.size() / 2), ideal.generators);
+        for (const std::size_t group : {std::size_t{5}, std::size_t{8}}) {
+            const std::string what = std::string(name) + " in groups of " + std::to_string(group);
+            ResidueZeroReducer::Statistics shared;
+            EXPECT_EQ(compare_reducers(good, 0, what, &shared, group), 0u);
+            EXPECT_LT(shared.row_terms, shared.reducer_terms) << what;
+            EXPECT_GT(compare_reducers(bad, 0, what + ", corrupted", nullptr, group), 0u);
+            ResidueZeroReducer::Statistics narrow;
+            EXPECT_EQ(compare_reducers(good, 8, what + " on 8 lanes", &narrow, group), 0u);
+            rebuilds += narrow.rebuilds;
+            EXPECT_GT(compare_reducers(bad, 8, what + " on 8 lanes, corrupted", nullptr, group),
+                      0u);
+        }
+    }
+    EXPECT_GT(rebuilds, 0u);
+    ResidueZeroReducer::Statistics narrow;
+    EXPECT_EQ(compare_reducers(dense_quadrics(), 8, "dense quadrics on 8 lanes in groups of 3",
+                               &narrow, 3),
+              0u);
+    EXPECT_GT(narrow.restarts, 0u);
 }
 
 // The work counts the certification reports (`locus groebner --stats`): the same steps on

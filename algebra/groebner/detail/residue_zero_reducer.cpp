@@ -117,48 +117,31 @@ void ResidueZeroReducer::activate(std::size_t lanes) {
         slot = make_level(lanes);
     }
     active_ = slot.get();
-    // Columns numbered while another level was active; every column is zero between reductions.
-    level().values.resize(table_.size() * lanes, 0);
-    lambda_.resize(lanes);
-    lambda_digits_.resize(lanes);
-    multiplier_lanes_.resize(lanes);
     digits_.resize(lanes);
-    factor_.resize(lanes);
-    quotients_.resize(lanes);
+    one_.resize(lanes);
+    for (std::size_t l = 0; l < lanes; ++l) {
+        one_[l] = level().system->primes().to_montgomery(l, 1);
+    }
     statistics_.lanes = std::max(statistics_.lanes, lanes);
 }
 
-void ResidueZeroReducer::begin() {
+void ResidueZeroReducer::scale_lambda(Reduction& r, const std::uint32_t* factor) {
     const LanePrimes& primes = level().system->primes();
-    for (std::size_t l = 0; l < lanes(); ++l) {
-        lambda_[l] = primes.to_montgomery(l, 1);
-    }
-    lanes::multiply(lambda_digits_.data(), lambda_.data(), level().system->digit_factors(), primes);
-    offset_ = 0;
-    highest_bound_ = lb::kZero;
-}
-
-void ResidueZeroReducer::scale_lambda(const std::uint32_t* factor) {
-    const LanePrimes& primes = level().system->primes();
-    lanes::multiply(lambda_.data(), lambda_.data(), factor, primes);
-    lanes::multiply(lambda_digits_.data(), lambda_.data(), level().system->digit_factors(), primes);
-}
-
-lb::Units ResidueZeroReducer::true_bound(std::uint32_t c) const {
-    return bound_[c] + offset_;
-}
-
-void ResidueZeroReducer::set_true_bound(std::uint32_t c, lb::Units bound) {
-    bound_[c] = bound - offset_;
-    highest_bound_ = std::max(highest_bound_, bound_[c]);
+    lanes::multiply(r.lambda.data(), r.lambda.data(), factor, primes);
+    lanes::multiply(r.lambda_digits.data(), r.lambda.data(), level().system->digit_factors(),
+                    primes);
 }
 
 std::uint32_t ResidueZeroReducer::column(const std::uint64_t* m) {
     const std::uint32_t c = table_.insert(m);
-    if (c == bound_.size()) {
-        level().values.resize(level().values.size() + lanes(), 0);
-        bound_.push_back(lb::kZero);
-        pending_.push_back(0);
+    if (c == in_heap_.size()) {
+        in_heap_.push_back(0);
+        for (std::size_t k = 0; k < group_size_; ++k) {
+            Reduction& r = *reductions_[k];
+            r.values.resize(r.values.size() + r.lanes, 0);
+            r.bound.push_back(lb::kZero);
+            r.pending.push_back(0);
+        }
         reducer_rows_.add_column();
         rank_.push_back(0);
         const auto at = ordered_.insert(c).first;
@@ -184,19 +167,39 @@ std::int32_t ResidueZeroReducer::row_of(std::uint32_t c) {
                                 [this](const std::uint64_t* m) { return column(m); });
 }
 
-void ResidueZeroReducer::push(std::uint32_t c) {
-    if (pending_[c] == 0) {
-        pending_[c] = 1;
+void ResidueZeroReducer::push(Reduction& r, std::uint32_t c) {
+    if (r.pending[c] == 0) {
+        r.pending[c] = 1;
+        r.pending_columns.push_back(c);
+        ++r.pending_count;
+    }
+    if (in_heap_[c] == 0) {
+        in_heap_[c] = 1;
         heap_.push_back(c);
         std::push_heap(heap_.begin(), heap_.end(),
                        [this](std::uint32_t x, std::uint32_t y) { return rank_[x] < rank_[y]; });
     }
 }
 
-void ResidueZeroReducer::add_multiple(const std::uint32_t* multiplier, lb::Units multiplier_bound,
-                                      const std::uint64_t* m, const IntegerPolynomial& p,
-                                      std::size_t from, const std::uint32_t* rows,
-                                      const lb::Units* bounds) {
+void ResidueZeroReducer::compact_pending(Reduction& r) {
+    // A column popped and made pending again is listed twice: marked 2 when first kept.
+    std::size_t kept = 0;
+    for (const std::uint32_t c : r.pending_columns) {
+        if (r.pending[c] == 1) {
+            r.pending[c] = 2;
+            r.pending_columns[kept++] = c;
+        }
+    }
+    r.pending_columns.resize(kept);
+    for (const std::uint32_t c : r.pending_columns) {
+        r.pending[c] = 1;
+    }
+}
+
+bool ResidueZeroReducer::add_multiple(Reduction& r, const std::uint32_t* multiplier,
+                                      lb::Units multiplier_bound, const std::uint64_t* m,
+                                      const IntegerPolynomial& p, std::size_t from,
+                                      const std::uint32_t* rows, const lb::Units* bounds) {
     const std::size_t w = layout_.words();
     touched_.clear();
     touched_bounds_.clear();
@@ -204,41 +207,118 @@ void ResidueZeroReducer::add_multiple(const std::uint32_t* multiplier, lb::Units
         layout_.multiply(p.monomial(j, w), m, product_.data());
         const std::uint32_t c = column(product_.data());
         const lb::Units bound =
-            lb::of_sum(true_bound(c), lb::of_product(multiplier_bound, bounds[j - from]));
+            lb::of_sum(r.true_bound(c), lb::of_product(multiplier_bound, bounds[j - from]));
         if (bound > level().system->capacity()) {
-            throw LanesExhausted{bound};
+            r.needed = bound;
+            return false;
         }
         touched_.push_back(c);
         touched_bounds_.push_back(bound);
     }
-    lanes::shoup_quotients(quotients_.data(), multiplier, level().system->primes());
-    lanes::add_scaled_rows(level().values.data(), touched_.data(), touched_.size(), rows,
-                           multiplier, quotients_.data(), level().system->primes());
+    lanes::shoup_quotients(r.quotients.data(), multiplier, level().system->primes());
+    lanes::add_scaled_rows(r.values.data(), touched_.data(), touched_.size(), rows, multiplier,
+                           r.quotients.data(), level().system->primes());
     for (std::size_t t = 0; t < touched_.size(); ++t) {
-        set_true_bound(touched_[t], touched_bounds_[t]);
-        push(touched_[t]);
+        const std::uint32_t c = touched_[t];
+        r.bound[c] = touched_bounds_[t] - r.offset;
+        r.highest_bound = std::max(r.highest_bound, r.bound[c]);
+        push(r, c);
+    }
+    return true;
+}
+
+void ResidueZeroReducer::load(Reduction& r, const Job& job) {
+    const std::size_t width = lanes();
+    r.lambda = one_;
+    r.lambda_digits.resize(width);
+    lanes::multiply(r.lambda_digits.data(), r.lambda.data(), level().system->digit_factors(),
+                    level().system->primes());
+    r.multiplier.resize(width);
+    r.quotients.resize(width);
+    r.factor.resize(width);
+    r.offset = 0;
+    r.highest_bound = lb::kZero;
+    r.rebuilds = 0;
+    r.just_rebuilt = false;
+    r.steps = 0;
+    r.state = Reduction::State::running;
+    bool loaded = true;
+    if (job.polynomial != nullptr) {
+        const IntegerPolynomial& p = *job.polynomial;
+        load_rows_.resize(p.size() * width);
+        load_bounds_.resize(p.size());
+        for (std::size_t j = 0; j < p.size(); ++j) {
+            level().system->residues(p.coefficients[j].get(), load_rows_.data() + j * width, false);
+            load_bounds_[j] = lb::upper(p.coefficients[j].get());
+        }
+        std::fill(r.multiplier.begin(), r.multiplier.end(), 1);
+        std::fill(multiplier_.begin(), multiplier_.end(), 0);  // the monomial 1
+        loaded = add_multiple(r, r.multiplier.data(), 0, multiplier_.data(), p, 0,
+                              load_rows_.data(), load_bounds_.data());
+    } else {
+        const std::size_t w = layout_.words();
+        const IntegerPolynomial& f = basis_[job.first].poly;
+        const IntegerPolynomial& g = basis_[job.second].poly;
+        // s = a·mf·f − b·mg·g with a = lc(g)/d, b = lc(f)/d: the leading terms cancel.
+        std::vector<std::uint64_t> mf(w), mg(w);
+        layout_.divide(job.lcm, f.monomial(0, w), mf.data());
+        layout_.divide(job.lcm, g.monomial(0, w), mg.data());
+        OwnedInteger owned_a, owned_minus_b;
+        mpz_ptr a = owned_a.value, minus_b = owned_minus_b.value;
+        mpz_gcd(a, elements_[job.first].leading, elements_[job.second].leading);
+        mpz_divexact(minus_b, elements_[job.first].leading, a);
+        mpz_neg(minus_b, minus_b);
+        mpz_divexact(a, elements_[job.second].leading, a);
+        level().system->residues(a, r.multiplier.data(), false);
+        loaded = add_multiple(r, r.multiplier.data(), lb::upper(a), mf.data(), f, 1,
+                              level().elements[job.first].rows.data(),
+                              elements_[job.first].term_bounds.data());
+        if (loaded) {
+            level().system->residues(minus_b, r.multiplier.data(), false);
+            loaded = add_multiple(r, r.multiplier.data(), lb::upper(minus_b), mg.data(), g, 1,
+                                  level().elements[job.second].rows.data(),
+                                  elements_[job.second].term_bounds.data());
+        }
+    }
+    if (!loaded) {
+        finish(r, Reduction::State::exhausted);
     }
 }
 
-void ResidueZeroReducer::clear_pending() {
+void ResidueZeroReducer::finish(Reduction& r, Reduction::State state) {
+    for (const std::uint32_t c : r.pending_columns) {
+        if (r.pending[c] != 0) {
+            std::fill_n(r.value(c), r.lanes, 0);
+            r.bound[c] = lb::kZero;
+            r.pending[c] = 0;
+        }
+    }
+    r.pending_columns.clear();
+    r.pending_count = 0;
+    r.state = state;
+}
+
+void ResidueZeroReducer::abandon_group(std::size_t members) {
+    for (std::size_t k = 0; k < members; ++k) {
+        finish(*reductions_[k], Reduction::State::not_zero);
+    }
     for (const std::uint32_t c : heap_) {
-        std::fill_n(value(c), lanes(), 0);
-        bound_[c] = lb::kZero;
-        pending_[c] = 0;
+        in_heap_[c] = 0;
     }
     heap_.clear();
 }
 
-void ResidueZeroReducer::rebuild_pending(std::uint32_t lc) {
+void ResidueZeroReducer::rebuild_pending(Reduction& r, std::uint32_t lc) {
     ++statistics_.rebuilds;
     const LanePrimes& primes = level().system->primes();
-    std::vector<std::uint32_t> columns(heap_);
+    compact_pending(r);
+    std::vector<std::uint32_t> columns(r.pending_columns);
     columns.push_back(lc);
     std::vector<OwnedInteger> values(columns.size());
     OwnedInteger owned_content;
     mpz_ptr content = owned_content.value;
     for (std::size_t h = 0; h < columns.size(); ++h) {
-        lanes::multiply(digits_.data(), value(columns[h]), lambda_digits_.data(), primes);
+        lanes::multiply(digits_.data(), r.value(columns[h]), r.lambda_digits.data(), primes);
         level().system->reconstruct(digits_.data(), values[h].value);
         mpz_gcd(content, content, values[h].value);
     }
@@ -248,65 +328,48 @@ void ResidueZeroReducer::rebuild_pending(std::uint32_t lc) {
             const std::uint32_t p = primes.prime(l);
             const ulong residue = mpz_fdiv_ui(content, p);
             invertible = invertible && residue != 0;
-            factor_[l] = residue == 0 ? 0
-                                      : primes.to_montgomery(
-                                            l, static_cast<std::uint32_t>(n_invmod(residue, p)));
+            r.factor[l] = residue == 0 ? 0
+                                       : primes.to_montgomery(
+                                             l, static_cast<std::uint32_t>(n_invmod(residue, p)));
         }
         for (OwnedInteger& v : values) {
             mpz_divexact(v.value, v.value, content);
         }
         if (invertible) {
-            scale_lambda(factor_.data());  // V/content = (Λ/content)·s
+            scale_lambda(r, r.factor.data());  // V/content = (Λ/content)·s
         } else {
             for (std::size_t h = 0; h < columns.size(); ++h) {
-                level().system->residues(values[h].value, value(columns[h]), false);
+                level().system->residues(values[h].value, r.value(columns[h]), false);
             }
-            begin();  // Λ = 1: the residues are the values themselves now
+            // Λ = 1: the residues are the values themselves now.
+            r.lambda = one_;
+            lanes::multiply(r.lambda_digits.data(), r.lambda.data(),
+                            level().system->digit_factors(), primes);
         }
     }
-    offset_ = 0;
-    highest_bound_ = lb::kZero;
+    r.offset = 0;
+    r.highest_bound = lb::kZero;
     for (std::size_t h = 0; h < columns.size(); ++h) {
-        bound_[columns[h]] = lb::upper(values[h].value);
-        highest_bound_ = std::max(highest_bound_, bound_[columns[h]]);
+        r.bound[columns[h]] = lb::upper(values[h].value);
+        r.highest_bound = std::max(r.highest_bound, r.bound[columns[h]]);
     }
 }
 
-bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
-    const auto descending = [this](std::uint32_t x, std::uint32_t y) {
-        return rank_[x] < rank_[y];
-    };
+bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const ReducerRows::Row& row) {
     const LanePrimes& primes = level().system->primes();
-    const std::size_t width = lanes();
-    std::size_t rebuilds = 0;
-    bool just_rebuilt = false;
-    while (!heap_.empty()) {
-        std::pop_heap(heap_.begin(), heap_.end(), descending);
-        const std::uint32_t c = heap_.back();
-        heap_.pop_back();
-        pending_[c] = 0;
-        if (lanes::is_zero(value(c), width)) {
-            bound_[c] = lb::kZero;
-            continue;
-        }
-        const std::int32_t r = row_of(c);  // may number new columns: values_ may move
-        if (r == ReducerRows::kIrreducible) {
-            std::fill_n(value(c), width, 0);
-            bound_[c] = lb::kZero;
-            clear_pending();
-            return false;
-        }
-        const ReducerRows::Row row = reducer_rows_.row(r);
-        const Element& e = elements_[row.element];
-        const ElementLanes& el = level().elements[row.element];
-        const std::uint32_t* s = value(c);
-
+    const Element& e = elements_[row.element];
+    const ElementLanes& el = level().elements[row.element];
+    const std::size_t length = basis_[row.element].poly.size() - 1;
+    const std::uint32_t* columns = reducer_rows_.columns_of(row);
+    const lb::Units capacity = level().system->capacity();
+    for (;;) {
+        const std::uint32_t* s = r.value(c);
         // g = gcd(V, L) for the fraction-free value V = Λ·s of the leading coefficient, from
         // V mod L; a = L/g multiplies p (and Λ) when g ≠ L.
         lb::Units gcd_lower = 0;
         bool scaled = false;
         if (el.divisor) {
-            lanes::multiply(digits_.data(), s, lambda_digits_.data(), primes);
+            lanes::multiply(digits_.data(), s, r.lambda_digits.data(), primes);
             remainder_.resize(el.divisor->limbs.size());
             level().system->remainder(digits_.data(), *el.divisor, remainder_.data());
             if (std::all_of(remainder_.begin(), remainder_.end(),
@@ -324,175 +387,294 @@ bool ResidueZeroReducer::reduce_loaded(ReductionCounts& counts) {
             }
         }
         // The bounds after a·p − b·m·g, b = V/g, checked before anything changes.
-        const lb::Units b_bound = true_bound(c) - gcd_lower;
-        const lb::Units offset = scaled ? offset_ + lb::upper(cofactor_) : offset_;
-        const std::size_t length = basis_[row.element].poly.size() - 1;
-        const std::uint32_t* columns = reducer_rows_.columns_of(row);
-        const lb::Units capacity = level().system->capacity();
-        // Bounds relative to the new offset (those of bound_ are: multiplying by a moves only
-        // the offset). Every new bound is at most the sum of the highest pending one and the
-        // largest product; when that fits, the step goes ahead and the bounds are computed
-        // with the pushes, in one pass after the kernel. Otherwise each is computed first.
+        const lb::Units b_bound = r.true_bound(c) - gcd_lower;
+        const lb::Units offset = scaled ? r.offset + lb::upper(cofactor_) : r.offset;
+        // Bounds relative to the new offset (those of r.bound are: multiplying by a moves
+        // only the offset). Every new bound is at most the sum of the highest pending one and
+        // the largest product; when that fits, the step goes ahead and the bounds are
+        // computed with the pushes, in one pass after the kernel. Otherwise each is computed
+        // first.
         const lb::Units relative_b = b_bound - offset, limit = capacity - offset;
         const bool surely_fits =
-            lb::of_sum(highest_bound_, relative_b + e.largest_term_bound) <= limit;
+            lb::of_sum(r.highest_bound, relative_b + e.largest_term_bound) <= limit;
         if (!surely_fits) {
-            bool fits = !scaled || highest_bound_ <= limit;
+            bool fits = !scaled || r.highest_bound <= limit;
             lb::Units highest = lb::kZero;
             for (std::size_t t = 0; t < length; ++t) {
                 highest = std::max(highest,
-                                   lb::of_sum(bound_[columns[t]], relative_b + e.term_bounds[t]));
+                                   lb::of_sum(r.bound[columns[t]], relative_b + e.term_bounds[t]));
             }
             fits = fits && highest <= limit;
             if (!fits) {
-                if (just_rebuilt || rebuilds == kRebuildsBeforeMoreLanes) {
-                    std::fill_n(value(c), width, 0);
-                    bound_[c] = lb::kZero;
-                    throw LanesExhausted{std::max(scaled ? highest_bound_ : lb::kZero, highest) +
-                                         offset};
+                if (r.just_rebuilt || r.rebuilds == kRebuildsBeforeMoreLanes) {
+                    std::fill_n(r.value(c), r.lanes, 0);
+                    r.bound[c] = lb::kZero;
+                    r.needed = std::max(scaled ? r.highest_bound : lb::kZero, highest) + r.offset;
+                    finish(r, Reduction::State::exhausted);
+                    return false;
                 }
-                rebuild_pending(c);
-                ++rebuilds;
-                just_rebuilt = true;
-                push(c);
-                continue;
+                rebuild_pending(r, c);
+                ++r.rebuilds;
+                r.just_rebuilt = true;
+                continue;  // the same step on the rebuilt values
             }
         }
-        just_rebuilt = false;
-
+        r.just_rebuilt = false;
         // In residues: s ← s − (s_c/L)·m·g.
-        lanes::multiply(multiplier_lanes_.data(), s, el.leading_inverse.data(), primes);
-        lanes::negate(multiplier_lanes_.data(), primes);
-        std::fill_n(value(c), width, 0);
-        bound_[c] = lb::kZero;
+        lanes::multiply(r.multiplier.data(), s, el.leading_inverse.data(), primes);
+        lanes::negate(r.multiplier.data(), primes);
+        lanes::shoup_quotients(r.quotients.data(), r.multiplier.data(), primes);
+        r.scaled = scaled;
         if (scaled) {
-            offset_ = offset;
-            level().system->residues(cofactor_, factor_.data(), true);
-            scale_lambda(factor_.data());
+            level().system->residues(cofactor_, r.factor.data(), true);
         }
-        lanes::shoup_quotients(quotients_.data(), multiplier_lanes_.data(), primes);
-        // The residues and the bounds in one pass over the terms.
-        if (fresh_.size() < length) {
-            fresh_.resize(length);  // grown only: a resize per step zero-filled what it regrew
-        }
-        lanes::ColumnBounds raise{bound_.data(),   e.term_bounds.data(), relative_b,
-                                  pending_.data(), fresh_.data(),        0,
-                                  highest_bound_};
-        lanes::add_scaled_rows_bounded(level().values.data(), columns, length, el.rows.data(),
-                                       multiplier_lanes_.data(), quotients_.data(), primes, raise);
-        statistics_.reducer_terms += length;
-        statistics_.lane_terms += length * width;
-        highest_bound_ = raise.highest;
-        for (std::size_t k = 0; k < raise.fresh_count; ++k) {
-            heap_.push_back(fresh_[k]);
-            std::push_heap(heap_.begin(), heap_.end(), descending);
-        }
-        ++counts.steps;
-        if (counts.steps % 16 == 0 && deadline_passed(deadline_)) {
-            clear_pending();
-            throw ReductionInterrupted{};
-        }
+        r.step_offset = offset;
+        r.relative_b = relative_b;
+        return true;
     }
-    return true;
 }
 
-template <typename Load>
-bool ResidueZeroReducer::reduce_with_retries(std::uint32_t degree, Load load,
-                                             ReductionCounts& counts) {
-    // Reductions begin on the fewest lanes that most of those of their degree fit: narrower
-    // lanes are read faster, and a reduction that outgrows them starts again on more. When a
-    // quarter of those begun on a degree's lanes have had to, the degree's start moves up. A
-    // degree not seen yet starts where the degree below it does (values grow with degree).
+void ResidueZeroReducer::make_step(Reduction& r, std::uint32_t c, const ReducerRows::Row& row) {
+    const Element& e = elements_[row.element];
+    const ElementLanes& el = level().elements[row.element];
+    const std::size_t length = basis_[row.element].poly.size() - 1;
+    std::fill_n(r.value(c), r.lanes, 0);
+    r.bound[c] = lb::kZero;
+    if (r.scaled) {
+        r.offset = r.step_offset;
+        scale_lambda(r, r.factor.data());
+    }
+    if (fresh_.size() < length) {
+        fresh_.resize(length);  // grown only: a resize per step zero-filled what it regrew
+    }
+    // The residues and the bounds in one pass over the terms.
+    lanes::ColumnBounds raise{r.bound.data(),   e.term_bounds.data(), r.relative_b,
+                              r.pending.data(), fresh_.data(),        0,
+                              r.highest_bound};
+    lanes::add_scaled_rows_bounded(r.values.data(), reducer_rows_.columns_of(row), length,
+                                   el.rows.data(), r.multiplier.data(), r.quotients.data(),
+                                   level().system->primes(), raise);
+    r.highest_bound = raise.highest;
+    for (std::size_t k = 0; k < raise.fresh_count; ++k) {
+        const std::uint32_t fresh = fresh_[k];
+        r.pending_columns.push_back(fresh);
+        ++r.pending_count;
+        if (in_heap_[fresh] == 0) {
+            in_heap_[fresh] = 1;
+            heap_.push_back(fresh);
+            std::push_heap(heap_.begin(), heap_.end(), [this](std::uint32_t x, std::uint32_t y) {
+                return rank_[x] < rank_[y];
+            });
+        }
+    }
+    statistics_.reducer_terms += length;
+    statistics_.lane_terms += length * r.lanes;
+    ++r.steps;
+}
+
+void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const std::size_t> members,
+                                   std::size_t lanes) {
+    activate(lanes);
+    while (reductions_.size() < members.size()) {
+        reductions_.push_back(std::make_unique<Reduction>());
+    }
+    const std::size_t columns = table_.size();
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        Reduction& r = *reductions_[k];
+        // Every value is zero between reductions: a new width only lays them out again.
+        if (r.lanes != lanes) {
+            r.values.assign(columns * lanes, 0);
+            r.lanes = lanes;
+        } else {
+            r.values.resize(columns * lanes, 0);
+        }
+        r.bound.resize(columns, lb::kZero);
+        r.pending.resize(columns, 0);
+    }
+    group_size_ = members.size();
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        load(*reductions_[k], jobs[members[k]]);
+    }
+    const auto descending = [this](std::uint32_t x, std::uint32_t y) {
+        return rank_[x] < rank_[y];
+    };
+    std::size_t rounds = 0;
+    try {
+        while (!heap_.empty()) {
+            std::pop_heap(heap_.begin(), heap_.end(), descending);
+            const std::uint32_t c = heap_.back();
+            heap_.pop_back();
+            in_heap_[c] = 0;
+            taking_.clear();
+            for (std::size_t k = 0; k < members.size(); ++k) {
+                Reduction& r = *reductions_[k];
+                if (r.state != Reduction::State::running || r.pending[c] == 0) {
+                    continue;
+                }
+                r.pending[c] = 0;
+                --r.pending_count;
+                if (lanes::is_zero(r.value(c), lanes)) {
+                    r.bound[c] = lb::kZero;
+                } else {
+                    taking_.push_back(&r);
+                }
+                if (r.pending_columns.size() > 2 * r.pending_count + 64) {
+                    compact_pending(r);
+                }
+            }
+            if (taking_.empty()) {
+                continue;
+            }
+            const std::int32_t index = row_of(c);  // may number new columns: values may move
+            if (index == ReducerRows::kIrreducible) {
+                for (Reduction* r : taking_) {
+                    std::fill_n(r->value(c), lanes, 0);
+                    r->bound[c] = lb::kZero;
+                    finish(*r, Reduction::State::not_zero);
+                }
+                continue;
+            }
+            const ReducerRows::Row row = reducer_rows_.row(index);
+            bool any = false;
+            for (Reduction* r : taking_) {
+                if (prepare_step(*r, c, row)) {
+                    make_step(*r, c, row);
+                    any = true;
+                }
+            }
+            if (any) {
+                statistics_.row_terms += basis_[row.element].poly.size() - 1;
+            }
+            if (++rounds % 16 == 0 && deadline_passed(deadline_)) {
+                throw ReductionInterrupted{};
+            }
+        }
+    } catch (...) {
+        abandon_group(members.size());
+        group_size_ = 0;
+        throw;
+    }
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        Reduction& r = *reductions_[k];
+        if (r.state == Reduction::State::running) {
+            r.pending_columns.clear();  // every one was popped: none is pending
+            r.pending_count = 0;
+            r.state = Reduction::State::zero;
+        }
+    }
+    group_size_ = 0;
+}
+
+ResidueZeroReducer::Start& ResidueZeroReducer::start_of(std::uint32_t degree) {
+    // A degree not seen yet starts where the degree below it does (values grow with degree).
     Start& start = starts_[degree];
     if (start.lanes == 0) {
         const auto below = starts_.find(degree);
         start.lanes = below == starts_.begin() ? first_lanes_ : std::prev(below)->second.lanes;
     }
-    for (std::size_t lanes = start.lanes;;) {
-        activate(lanes);
-        ReductionCounts attempt;
-        try {
-            begin();
-            load();
-            const bool zero = reduce_loaded(attempt);
-            counts.steps += attempt.steps;
-            ++start.begun;
-            start.outgrown += lanes > start.lanes ? 1 : 0;
-            if (learn_ && start.begun >= 4 && 4 * start.outgrown > start.begun) {
-                const auto above = levels_.upper_bound(start.lanes);
-                start = {above != levels_.end() ? above->first : next_lanes(start.lanes), 0, 0};
-            }
-            return zero;
-        } catch (const LanesExhausted& exhausted) {
-            clear_pending();
+    return start;
+}
+
+std::uint32_t ResidueZeroReducer::degree_of(const Job& job) const {
+    if (job.polynomial != nullptr) {
+        return job.polynomial->empty()
+                   ? 0
+                   : layout_.total_degree(job.polynomial->monomial(0, layout_.words()));
+    }
+    return layout_.total_degree(job.lcm);
+}
+
+void ResidueZeroReducer::reduce_together(std::span<const Job> jobs, std::span<Verdict> verdicts,
+                                         std::span<ReductionCounts> counts) {
+    // Reductions begin on the fewest lanes that most of those of their degree fit: narrower
+    // lanes are read faster, and a reduction that outgrows them starts again on more. When a
+    // quarter of those begun on a degree's lanes have had to, the degree's start moves up. A
+    // group begins on the widest start of its jobs' degrees.
+    std::vector<std::size_t> members;
+    std::size_t lanes = 0;
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+        if (jobs[k].polynomial != nullptr && jobs[k].polynomial->empty()) {
+            verdicts[k] = Verdict::zero;
+            continue;
+        }
+        members.push_back(k);
+        lanes = std::max(lanes, start_of(degree_of(jobs[k])).lanes);
+    }
+    if (members.empty()) {
+        return;
+    }
+    run_group(jobs, members, lanes);
+    // Outcomes in order, each exhausted one begun again alone on more lanes.
+    std::vector<Reduction::State> states(members.size());
+    std::vector<log_bound::Units> needed(members.size());
+    std::vector<std::size_t> steps(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        states[m] = reductions_[m]->state;
+        needed[m] = reductions_[m]->needed;
+        steps[m] = reductions_[m]->steps;
+    }
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        const std::size_t k = members[m];
+        std::size_t at = lanes;
+        bool restarted = false;
+        while (states[m] == Reduction::State::exhausted) {
             ++statistics_.restarts;
+            restarted = true;
             // Room for half as much again as the bound that did not fit: values that outgrew
             // one level tend to keep growing, and every start again repeats the work.
             const auto bits =
-                static_cast<std::size_t>(std::max<lb::Units>(0, exhausted.needed) / lb::kPerBit);
-            std::size_t wanted = next_lanes(lanes);
+                static_cast<std::size_t>(std::max<lb::Units>(0, needed[m]) / lb::kPerBit);
+            std::size_t wanted = next_lanes(at);
             while ((wanted - 1) * kLaneBits < bits + bits / 2 + 3) {
                 wanted = next_lanes(wanted);
             }
             if (wanted > kMostLanes) {
-                throw TooWide{};
+                break;
             }
             const auto existing = levels_.lower_bound(wanted);
-            lanes = existing != levels_.end() ? existing->first : wanted;
+            at = existing != levels_.end() ? existing->first : wanted;
+            const std::size_t alone[] = {k};
+            run_group(jobs, alone, at);
+            states[m] = reductions_[0]->state;
+            needed[m] = reductions_[0]->needed;
+            steps[m] = reductions_[0]->steps;
+        }
+        if (states[m] == Reduction::State::exhausted) {
+            verdicts[k] = Verdict::too_wide;
+            continue;
+        }
+        verdicts[k] = states[m] == Reduction::State::zero ? Verdict::zero : Verdict::not_zero;
+        counts[k].steps += steps[m];
+        Start& start = start_of(degree_of(jobs[k]));
+        ++start.begun;
+        start.outgrown += restarted ? 1 : 0;
+        if (learn_ && start.begun >= 4 && 4 * start.outgrown > start.begun) {
+            const auto above = levels_.upper_bound(start.lanes);
+            start = {above != levels_.end() ? above->first : next_lanes(start.lanes), 0, 0};
         }
     }
 }
 
 bool ResidueZeroReducer::reduces_to_zero(const IntegerPolynomial& p, ReductionCounts& counts) {
-    if (p.empty()) {
-        return true;
+    const Job job{&p, 0, 0, nullptr};
+    Verdict verdict = Verdict::zero;
+    reduce_together(std::span(&job, 1), std::span(&verdict, 1), std::span(&counts, 1));
+    if (verdict == Verdict::too_wide) {
+        throw TooWide{};
     }
-    return reduce_with_retries(
-        layout_.total_degree(p.monomial(0, layout_.words())),
-        [&] {
-            const std::size_t width = lanes();
-            load_rows_.resize(p.size() * width);
-            load_bounds_.resize(p.size());
-            for (std::size_t j = 0; j < p.size(); ++j) {
-                level().system->residues(p.coefficients[j].get(), load_rows_.data() + j * width,
-                                         false);
-                load_bounds_[j] = lb::upper(p.coefficients[j].get());
-            }
-            std::fill(multiplier_lanes_.begin(), multiplier_lanes_.end(), 1);
-            std::fill(multiplier_.begin(), multiplier_.end(), 0);  // the monomial 1
-            add_multiple(multiplier_lanes_.data(), 0, multiplier_.data(), p, 0, load_rows_.data(),
-                         load_bounds_.data());
-        },
-        counts);
+    return verdict == Verdict::zero;
 }
 
 bool ResidueZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t j,
                                                       const std::uint64_t* lcm,
                                                       ReductionCounts& counts) {
-    const std::size_t w = layout_.words();
-    const IntegerPolynomial& f = basis_[i].poly;
-    const IntegerPolynomial& g = basis_[j].poly;
-    // s = a·mf·f − b·mg·g with a = lc(g)/d, b = lc(f)/d: the leading terms cancel.
-    std::vector<std::uint64_t> mf(w), mg(w);
-    layout_.divide(lcm, f.monomial(0, w), mf.data());
-    layout_.divide(lcm, g.monomial(0, w), mg.data());
-    OwnedInteger owned_a, owned_minus_b;
-    mpz_ptr a = owned_a.value, minus_b = owned_minus_b.value;
-    mpz_gcd(a, elements_[i].leading, elements_[j].leading);
-    mpz_divexact(minus_b, elements_[i].leading, a);
-    mpz_neg(minus_b, minus_b);
-    mpz_divexact(a, elements_[j].leading, a);
-    return reduce_with_retries(
-        layout_.total_degree(lcm),
-        [&] {
-            level().system->residues(a, multiplier_lanes_.data(), false);
-            add_multiple(multiplier_lanes_.data(), lb::upper(a), mf.data(), f, 1,
-                         level().elements[i].rows.data(), elements_[i].term_bounds.data());
-            level().system->residues(minus_b, multiplier_lanes_.data(), false);
-            add_multiple(multiplier_lanes_.data(), lb::upper(minus_b), mg.data(), g, 1,
-                         level().elements[j].rows.data(), elements_[j].term_bounds.data());
-        },
-        counts);
+    const Job job{nullptr, i, j, lcm};
+    Verdict verdict = Verdict::zero;
+    reduce_together(std::span(&job, 1), std::span(&verdict, 1), std::span(&counts, 1));
+    if (verdict == Verdict::too_wide) {
+        throw TooWide{};
+    }
+    return verdict == Verdict::zero;
 }
 
 }  // namespace locus::algebra::detail

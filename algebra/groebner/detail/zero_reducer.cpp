@@ -54,6 +54,29 @@ bool ZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t j,
     return exact().s_polynomial_reduces_to_zero(i, j, lcm, counts);
 }
 
+void ZeroReducer::reduce_together(std::span<const Job> jobs, std::span<bool> zero,
+                                  std::span<ReductionCounts> counts) {
+    std::vector<ResidueZeroReducer::Verdict> verdicts(jobs.size(),
+                                                      ResidueZeroReducer::Verdict::too_wide);
+    if (residue_) {
+        residue_->reduce_together(jobs, verdicts, counts);
+    }
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+        if (verdicts[k] != ResidueZeroReducer::Verdict::too_wide) {
+            zero[k] = verdicts[k] == ResidueZeroReducer::Verdict::zero;
+            continue;
+        }
+        if (residue_) {
+            residue_statistics_ = residue_->statistics();
+            residue_.reset();
+        }
+        const Job& job = jobs[k];
+        zero[k] = job.polynomial != nullptr ? exact().reduces_to_zero(*job.polynomial, counts[k])
+                                            : exact().s_polynomial_reduces_to_zero(
+                                                  job.first, job.second, job.lcm, counts[k]);
+    }
+}
+
 CertificationWork ZeroReducer::statistics() const {
     const ResidueZeroReducer::Statistics r =
         residue_ ? residue_->statistics() : residue_statistics_;
@@ -63,6 +86,7 @@ CertificationWork ZeroReducer::statistics() const {
     work.rebuilds = r.rebuilds;
     work.reducer_terms = r.reducer_terms;
     work.lane_terms = r.lane_terms;
+    work.row_terms = r.row_terms;
     work.columns = r.columns;
     work.exact_fallback = exact_ != nullptr;
     return work;

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "algebra/groebner/detail/exact_zero_reducer.h"
@@ -39,6 +40,14 @@ class ZeroReducer {
     // `lcm`, reduces to zero.
     bool s_polynomial_reduces_to_zero(std::size_t i, std::size_t j, const std::uint64_t* lcm,
                                       ReductionCounts& counts);
+
+    // Whether each job reduces to zero (zero[k] for jobs[k]), reduced together while on
+    // residues (ResidueZeroReducer::reduce_together), one after another on GMP integers.
+    using Job = ResidueZeroReducer::Job;
+    // The jobs the certification reduces together.
+    static constexpr std::size_t kGroup = 8;
+    void reduce_together(std::span<const Job> jobs, std::span<bool> zero,
+                         std::span<ReductionCounts> counts);
 
     // Lanes at the end (0 on GMP integers only), restarts, rebuilds, and whether some reductions
     // ran on GMP integers; reduction_steps are counted by the caller (ReductionCounts).
