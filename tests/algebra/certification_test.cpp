@@ -7,6 +7,7 @@
 // corrupted ones, and on lanes so narrow that reductions start again and rebuild their values.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -102,49 +103,85 @@ TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
             lanes::add_scaled_rows(table.data(), columns.data(), 0, nullptr, b.data(),
                                    quotients.data(), primes);
             ASSERT_EQ(table, expected) << kernel << " lanes " << width;
-            // The bounded kernel: the same residues, and beside them every touched column's
-            // bound raised by its term (log_bound's sum), the highest of them, and the columns
-            // not pending before listed in term order and marked.
-            std::vector<std::int64_t> bound(50), term(20);
-            std::vector<std::uint8_t> pending(50);
-            for (std::size_t c = 0; c < 50; ++c) {
-                bound[c] = c % 7 == 0 ? lb::kZero : static_cast<std::int64_t>(rng() % 40000);
-                pending[c] = static_cast<std::uint8_t>(rng() % 2);
+            // The kernel of reductions done together: slots 0, 2, 3, 5 and 7 of a shared table,
+            // each with its multiplier; every touched slot's residues, its bound raised by the
+            // term (log_bound's sum) and its highest, and the columns not pending before listed
+            // per slot in term order and marked. Slots not taking the step are left alone.
+            const unsigned slots = 0b10101101;
+            std::vector<std::uint32_t> shared(50 * lanes::kSlots * width);
+            std::vector<std::uint32_t> multipliers(lanes::kSlots * width),
+                slot_quotients(lanes::kSlots * width);
+            for (std::size_t k = 0; k < shared.size(); ++k) {
+                shared[k] = static_cast<std::uint32_t>(rng() % primes.prime(k % width));
+            }
+            for (std::size_t sl = 0; sl < lanes::kSlots; ++sl) {
+                for (std::size_t l = 0; l < width; ++l) {
+                    multipliers[sl * width + l] =
+                        static_cast<std::uint32_t>(rng() % primes.prime(l));
+                }
+                lanes::shoup_quotients(slot_quotients.data() + sl * width,
+                                       multipliers.data() + sl * width, primes);
+            }
+            std::vector<std::int64_t> bound(50 * lanes::kSlots), term(20);
+            std::vector<std::uint8_t> pending(50 * lanes::kSlots);
+            for (std::size_t k = 0; k < bound.size(); ++k) {
+                bound[k] = k % 7 == 0 ? lb::kZero : static_cast<std::int64_t>(rng() % 40000);
+                pending[k] = static_cast<std::uint8_t>(rng() % 2);
             }
             for (std::int64_t& u : term) {
                 u = static_cast<std::int64_t>(rng() % 30000);
             }
-            const std::int64_t offset = 1234, highest_before = 20000;
+            std::array<std::int64_t, lanes::kSlots> offsets{}, highest{};
+            for (std::size_t sl = 0; sl < lanes::kSlots; ++sl) {
+                offsets[sl] = static_cast<std::int64_t>(rng() % 3000);
+                highest[sl] = static_cast<std::int64_t>(rng() % 40000);
+            }
+            std::vector<std::uint32_t> expected_shared = shared;
             std::vector<std::int64_t> expected_bound = bound;
             std::vector<std::uint8_t> expected_pending = pending;
-            std::vector<std::uint32_t> expected_fresh;
-            std::int64_t expected_highest = highest_before;
+            std::array<std::int64_t, lanes::kSlots> expected_highest = highest;
+            std::vector<std::vector<std::uint32_t>> expected_fresh(lanes::kSlots);
             for (std::size_t t = 0; t < 20; ++t) {
                 const std::uint32_t c = columns[t];
-                expected_bound[c] = lb::of_sum(expected_bound[c], offset + term[t]);
-                expected_highest = std::max(expected_highest, expected_bound[c]);
-                if (expected_pending[c] == 0) {
-                    expected_pending[c] = 1;
-                    expected_fresh.push_back(c);
-                }
-                for (std::size_t l = 0; l < width; ++l) {
-                    const std::uint64_t p = primes.prime(l);
-                    std::uint32_t& v = expected[c * width + l];
-                    v = static_cast<std::uint32_t>(
-                        (v + static_cast<std::uint64_t>(b[l]) * rows[t * width + l] % p) % p);
+                for (std::size_t sl = 0; sl < lanes::kSlots; ++sl) {
+                    if ((slots >> sl & 1u) == 0) {
+                        continue;
+                    }
+                    const std::size_t at = c * lanes::kSlots + sl;
+                    expected_bound[at] = lb::of_sum(expected_bound[at], offsets[sl] + term[t]);
+                    expected_highest[sl] = std::max(expected_highest[sl], expected_bound[at]);
+                    if (expected_pending[at] == 0) {
+                        expected_pending[at] = 1;
+                        expected_fresh[sl].push_back(c);
+                    }
+                    for (std::size_t l = 0; l < width; ++l) {
+                        const std::uint64_t p = primes.prime(l);
+                        std::uint32_t& v = expected_shared[at * width + l];
+                        v = static_cast<std::uint32_t>(
+                            (v + static_cast<std::uint64_t>(multipliers[sl * width + l]) *
+                                     rows[t * width + l] % p) %
+                            p);
+                    }
                 }
             }
-            std::vector<std::uint32_t> fresh(20);
-            lanes::ColumnBounds bounds{bound.data(), term.data(), offset,        pending.data(),
-                                       fresh.data(), 0,           highest_before};
-            lanes::add_scaled_rows_bounded(table.data(), columns.data(), 20, rows.data(), b.data(),
-                                           quotients.data(), primes, bounds);
-            ASSERT_EQ(table, expected) << kernel << " lanes " << width;
+            std::vector<std::uint32_t> fresh(20 * lanes::kSlots);
+            std::array<std::size_t, lanes::kSlots> fresh_counts{};
+            lanes::SlotBounds bounds{bound.data(),   term.data(),  offsets.data(),
+                                     pending.data(), fresh.data(), fresh_counts.data(),
+                                     highest.data()};
+            lanes::add_scaled_rows_together(shared.data(), columns.data(), 20, rows.data(), slots,
+                                            multipliers.data(), slot_quotients.data(), primes,
+                                            bounds);
+            ASSERT_EQ(shared, expected_shared) << kernel << " lanes " << width;
             ASSERT_EQ(bound, expected_bound) << kernel << " lanes " << width;
             ASSERT_EQ(pending, expected_pending) << kernel << " lanes " << width;
-            fresh.resize(bounds.fresh_count);
-            ASSERT_EQ(fresh, expected_fresh) << kernel << " lanes " << width;
-            ASSERT_EQ(bounds.highest, expected_highest) << kernel << " lanes " << width;
+            ASSERT_EQ(highest, expected_highest) << kernel << " lanes " << width;
+            for (std::size_t sl = 0; sl < lanes::kSlots; ++sl) {
+                const std::vector<std::uint32_t> listed(fresh.begin() + sl * 20,
+                                                        fresh.begin() + sl * 20 + fresh_counts[sl]);
+                ASSERT_EQ(listed, expected_fresh[sl])
+                    << kernel << " lanes " << width << " slot " << sl;
+            }
             // Digits of any 32 bits, powers below p.
             std::vector<std::uint32_t> halves(6), powers(6 * width);
             random_residues(halves, false);

@@ -14,12 +14,25 @@ constexpr double kMargin = 1e-4;
 
 }  // namespace
 
+const std::array<std::int32_t, kSumTableSize / kSumNodeStep + 1> kSumNodes = [] {
+    std::array<std::int32_t, kSumTableSize / kSumNodeStep + 1> n{};
+    for (std::size_t i = 0; i < n.size(); ++i) {
+        const double d = static_cast<double>(i * kSumNodeStep);
+        const double exact = kPerBit * std::log2(1.0 + std::exp2(-d / kPerBit));
+        n[i] = static_cast<std::int32_t>(std::max(1.0, std::ceil(exact + kMargin)));
+    }
+    return n;
+}();
+
 const std::array<std::uint8_t, kSumTableSize> kSumTable = [] {
     std::array<std::uint8_t, kSumTableSize> t{};
+    constexpr auto step = static_cast<std::int32_t>(kSumNodeStep);
     for (std::size_t d = 0; d < kSumTableSize; ++d) {
-        const double exact =
-            kPerBit * std::log2(1.0 + std::exp2(-static_cast<double>(d) / kPerBit));
-        t[d] = static_cast<std::uint8_t>(std::max(1.0, std::ceil(exact + kMargin)));
+        const std::int32_t low = kSumNodes[d / kSumNodeStep];
+        const std::int32_t high = kSumNodes[d / kSumNodeStep + 1];
+        const auto r = static_cast<std::int32_t>(d % kSumNodeStep);
+        // Non-negative: the nodes decrease and the chord stays above the lower one.
+        t[d] = static_cast<std::uint8_t>((step * low + (high - low) * r + step - 1) / step);
     }
     return t;
 }();

@@ -1,7 +1,7 @@
 #include "algebra/groebner/detail/residue_lanes.h"
 
 #include <algorithm>
-#include <optional>
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -23,7 +23,8 @@ namespace locus::algebra::detail {
 
 namespace {
 
-using lanes::ColumnBounds;
+using lanes::kSlots;
+using lanes::SlotBounds;
 
 // x·y·2^-32 mod p for x·y < 2^32·p (one operand below p suffices).
 inline std::uint32_t montgomery(std::uint32_t x, std::uint32_t y, std::uint32_t p,
@@ -40,38 +41,18 @@ inline std::uint32_t add_mod(std::uint32_t x, std::uint32_t y, std::uint32_t p) 
     return s >= p ? s - p : s;
 }
 
-// ColumnBounds's update for term t at `column`, on locals (the caller's copies of its fields:
-// the pending bytes alias everything, so members would be reloaded after every store).
-struct BoundsInLoop {
-    explicit BoundsInLoop(ColumnBounds& b)
-        : bound(b.bound),
-          term(b.term),
-          offset(b.offset),
-          pending(b.pending),
-          fresh(b.fresh + b.fresh_count),
-          highest(b.highest),
-          origin(b) {}
-    void operator()(std::size_t t, std::uint32_t column) {
-        const std::int64_t raised = log_bound::of_sum(bound[column], offset + term[t]);
-        bound[column] = raised;
-        highest = raised > highest ? raised : highest;
-        if (pending[column] == 0) {
-            pending[column] = 1;
-            *fresh++ = column;
-        }
+// SlotBounds's update of one slot for one term, on the caller's locals.
+inline void raise_slot(const lanes::SlotBounds& bounds, std::size_t slot, std::uint32_t column,
+                       std::int64_t term, std::size_t n) {
+    const std::size_t at = static_cast<std::size_t>(column) * lanes::kSlots + slot;
+    const std::int64_t raised = log_bound::of_sum(bounds.bound[at], bounds.offset[slot] + term);
+    bounds.bound[at] = raised;
+    bounds.highest[slot] = std::max(bounds.highest[slot], raised);
+    if (bounds.pending[at] == 0) {
+        bounds.pending[at] = 1;
+        bounds.fresh[slot * n + bounds.fresh_count[slot]++] = column;
     }
-    void finish() {
-        origin.fresh_count = static_cast<std::size_t>(fresh - origin.fresh);
-        origin.highest = highest;
-    }
-    std::int64_t* bound;
-    const std::int64_t* term;
-    std::int64_t offset;
-    std::uint8_t* pending;
-    std::uint32_t* fresh;
-    std::int64_t highest;
-    ColumnBounds& origin;
-};
+}
 
 // --- portable ------------------------------------------------------------------------------
 
@@ -247,16 +228,16 @@ LOCUS_AVX512 inline __m512i shoup16(__m512i x, __m512i b, __m512i b_quotient,
 }
 
 // The lane count as a template parameter for the common widths: the loop over blocks unrolls
-// and the primes and the multiplier stay in registers across the terms.
-// `stride` is the lanes a column and a term hold, kLanes of which (from the given pointers on)
-// this call updates: a wider table is done in chunks of at most 64 lanes.
-template <std::size_t kLanes, bool kBounded>
+// and the primes and the multiplier stay in registers across the terms. `row_stride` and
+// `table_stride` are the lanes a term and a column hold (more than kLanes when a wider row is
+// done in chunks of at most 64 lanes, or when the table holds several slots a column).
+template <std::size_t kLanes>
 LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::uint32_t* columns,
                                                std::size_t n, const std::uint32_t* rows,
                                                const std::uint32_t* b,
                                                const std::uint32_t* b_quotients,
-                                               const std::uint32_t* p, std::size_t stride,
-                                               ColumnBounds* bounds) {
+                                               const std::uint32_t* p, std::size_t row_stride,
+                                               std::size_t table_stride) {
     constexpr std::size_t kBlocks = kLanes / 16;
     constexpr bool kTail = kLanes % 16 != 0;
     __m512i bv[kBlocks + 1], bq[kBlocks + 1], bq_odd[kBlocks + 1], pv[kBlocks + 1];
@@ -273,17 +254,9 @@ LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::
         bq_odd_tail = _mm256_srli_epi64(bq_tail, 32);
         p_tail = load8(p + 16 * kBlocks);
     }
-    std::optional<BoundsInLoop> raise;
-    if constexpr (kBounded) {
-        raise.emplace(*bounds);
-    }
     for (std::size_t t = 0; t < n; ++t) {
-        const std::uint32_t column = columns[t];
-        std::uint32_t* v = table + static_cast<std::size_t>(column) * stride;
-        const std::uint32_t* row = rows + t * stride;
-        if constexpr (kBounded) {
-            (*raise)(t, column);
-        }
+        std::uint32_t* v = table + static_cast<std::size_t>(columns[t]) * table_stride;
+        const std::uint32_t* row = rows + t * row_stride;
         for (std::size_t k = 0; k < kBlocks; ++k) {
             const __m512i product =
                 shoup16(_mm512_loadu_si512(row + 16 * k), bv[k], bq[k], bq_odd[k], pv[k]);
@@ -296,65 +269,49 @@ LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::
             store8(v + 16 * kBlocks, add_mod8(load8(v + 16 * kBlocks), product, p_tail));
         }
     }
-    if constexpr (kBounded) {
-        raise->finish();
-    }
 }
 
-template <bool kBounded>
-LOCUS_AVX512 void add_scaled_rows_avx512_with(std::uint32_t* table, const std::uint32_t* columns,
-                                              std::size_t n, const std::uint32_t* rows,
-                                              const std::uint32_t* b,
-                                              const std::uint32_t* b_quotients,
-                                              const std::uint32_t* p, std::size_t lanes,
-                                              ColumnBounds* bounds) {
-    // Chunks of at most 64 lanes, each with its primes and multiplier in registers across the
-    // terms (one masked block loop over all the lanes reloaded them for every term and block:
-    // the certification's 104 lanes of cyclic-8 spent a third of the run there).
+// add_scaled_rows_avx512_fixed over any number of lanes: chunks of at most 64, each with its
+// primes and multiplier in registers across the terms (one masked block loop over all the
+// lanes reloaded them for every term and block: the certification's 104 lanes of cyclic-8
+// spent a third of the run there).
+LOCUS_AVX512 void add_scaled_rows_avx512_strided(std::uint32_t* table, const std::uint32_t* columns,
+                                                 std::size_t n, const std::uint32_t* rows,
+                                                 const std::uint32_t* b,
+                                                 const std::uint32_t* b_quotients,
+                                                 const std::uint32_t* p, std::size_t lanes,
+                                                 std::size_t table_stride) {
     for (std::size_t l = 0; l < lanes; l += 64) {
         const std::size_t chunk = std::min<std::size_t>(64, lanes - l);
-        // The bounds are raised once, with the first chunk.
-        auto run = [&](auto unbounded, auto bounded) {
-            if (kBounded && l == 0) {
-                bounded(table + l, columns, n, rows + l, b + l, b_quotients + l, p + l, lanes,
-                        bounds);
-            } else {
-                unbounded(table + l, columns, n, rows + l, b + l, b_quotients + l, p + l, lanes,
-                          nullptr);
-            }
+        const auto run = [&](auto kernel) {
+            kernel(table + l, columns, n, rows + l, b + l, b_quotients + l, p + l, lanes,
+                   table_stride);
         };
         switch (chunk) {
         case 8:
-            run(add_scaled_rows_avx512_fixed<8, false>, add_scaled_rows_avx512_fixed<8, kBounded>);
+            run(add_scaled_rows_avx512_fixed<8>);
             break;
         case 16:
-            run(add_scaled_rows_avx512_fixed<16, false>,
-                add_scaled_rows_avx512_fixed<16, kBounded>);
+            run(add_scaled_rows_avx512_fixed<16>);
             break;
         case 24:
-            run(add_scaled_rows_avx512_fixed<24, false>,
-                add_scaled_rows_avx512_fixed<24, kBounded>);
+            run(add_scaled_rows_avx512_fixed<24>);
             break;
         case 32:
-            run(add_scaled_rows_avx512_fixed<32, false>,
-                add_scaled_rows_avx512_fixed<32, kBounded>);
+            run(add_scaled_rows_avx512_fixed<32>);
             break;
         case 40:
-            run(add_scaled_rows_avx512_fixed<40, false>,
-                add_scaled_rows_avx512_fixed<40, kBounded>);
+            run(add_scaled_rows_avx512_fixed<40>);
             break;
         case 48:
-            run(add_scaled_rows_avx512_fixed<48, false>,
-                add_scaled_rows_avx512_fixed<48, kBounded>);
+            run(add_scaled_rows_avx512_fixed<48>);
             break;
         case 56:
-            run(add_scaled_rows_avx512_fixed<56, false>,
-                add_scaled_rows_avx512_fixed<56, kBounded>);
+            run(add_scaled_rows_avx512_fixed<56>);
             break;
-        default:  // 64: lanes are a multiple of 8
-            run(add_scaled_rows_avx512_fixed<64, false>,
-                add_scaled_rows_avx512_fixed<64, kBounded>);
-            break;
+        default:
+            run(add_scaled_rows_avx512_fixed<64>);
+            break;  // lanes are a multiple of 8
         }
     }
 }
@@ -363,16 +320,71 @@ LOCUS_AVX512 void add_scaled_rows_avx512(std::uint32_t* table, const std::uint32
                                          std::size_t n, const std::uint32_t* rows,
                                          const std::uint32_t* b, const std::uint32_t* b_quotients,
                                          const std::uint32_t* p, std::size_t lanes) {
-    add_scaled_rows_avx512_with<false>(table, columns, n, rows, b, b_quotients, p, lanes, nullptr);
+    add_scaled_rows_avx512_strided(table, columns, n, rows, b, b_quotients, p, lanes, lanes);
 }
 
-LOCUS_AVX512 void add_scaled_rows_bounded_avx512(std::uint32_t* table, const std::uint32_t* columns,
-                                                 std::size_t n, const std::uint32_t* rows,
-                                                 const std::uint32_t* b,
-                                                 const std::uint32_t* b_quotients,
-                                                 const std::uint32_t* p, std::size_t lanes,
-                                                 ColumnBounds& bounds) {
-    add_scaled_rows_avx512_with<true>(table, columns, n, rows, b, b_quotients, p, lanes, &bounds);
+// The bounds of every slot for every term, then each slot's residues in a pass of its own:
+// with its multiplier in registers, the row (25 KB for 200 terms on 32 lanes) read again from
+// the first-level cache. One pass over the terms for all the slots, each reading its
+// multiplier from memory, was a third slower per slot and term (2026-11-29).
+LOCUS_AVX512 void add_scaled_rows_together_avx512(
+    std::uint32_t* table, const std::uint32_t* columns, std::size_t n, const std::uint32_t* rows,
+    unsigned slots, const std::uint32_t* b, const std::uint32_t* b_quotients,
+    const std::uint32_t* p, std::size_t lanes, SlotBounds& bounds) {
+    const __mmask8 slot_mask = static_cast<__mmask8>(slots);
+    const __m512i offset = _mm512_loadu_si512(bounds.offset);
+    const __m512i last = _mm512_set1_epi64(static_cast<long long>(log_bound::kSumTableSize - 1));
+    // log_bound's chord nodes, 32 and the 32 after them, for two-register permutes.
+    const std::int32_t* nodes = log_bound::kSumNodes.data();
+    const __m512i node_low = _mm512_loadu_si512(nodes), node_high = _mm512_loadu_si512(nodes + 16);
+    const __m512i next_low = _mm512_loadu_si512(nodes + 1);
+    const __m512i next_high = _mm512_loadu_si512(nodes + 17);
+    constexpr int kStepBits = 5;
+    static_assert(log_bound::kSumNodeStep == 1u << kStepBits &&
+                  log_bound::kSumTableSize / log_bound::kSumNodeStep == 32);
+    const __m512i step_less_one = _mm512_set1_epi32((1 << kStepBits) - 1);
+    __m512i highest = _mm512_loadu_si512(bounds.highest);
+    for (std::size_t t = 0; t < n; ++t) {
+        const std::uint32_t c = columns[t];
+        // The slots' bounds: of_sum for all of them at once, the sum table's entry computed
+        // from its chord (log_bound.h) on 32-bit lanes (a gather of the entries cost 20 cycles).
+        std::int64_t* bound = bounds.bound + static_cast<std::size_t>(c) * kSlots;
+        const __m512i x = _mm512_loadu_si512(bound);
+        const __m512i y = _mm512_add_epi64(offset, _mm512_set1_epi64(bounds.term[t]));
+        const __m512i high = _mm512_max_epi64(x, y), low = _mm512_min_epi64(x, y);
+        const __m512i gap = _mm512_zextsi256_si512(
+            _mm512_cvtepi64_epi32(_mm512_min_epi64(_mm512_sub_epi64(high, low), last)));
+        const __m512i node = _mm512_srli_epi32(gap, kStepBits);
+        const __m512i from = _mm512_permutex2var_epi32(node_low, node, node_high);
+        const __m512i to = _mm512_permutex2var_epi32(next_low, node, next_high);
+        const __m512i chord = _mm512_add_epi32(
+            _mm512_slli_epi32(from, kStepBits),
+            _mm512_mullo_epi32(_mm512_sub_epi32(to, from), _mm512_and_si512(gap, step_less_one)));
+        const __m512i raise = _mm512_cvtepi32_epi64(_mm512_castsi512_si256(
+            _mm512_srli_epi32(_mm512_add_epi32(chord, step_less_one), kStepBits)));
+        const __m512i raised = _mm512_add_epi64(high, raise);
+        _mm512_mask_storeu_epi64(bound, slot_mask, raised);
+        highest = _mm512_mask_max_epi64(highest, slot_mask, highest, raised);
+        // Slots for which the column was not pending: now it is, and listed.
+        std::uint8_t* pending = bounds.pending + static_cast<std::size_t>(c) * kSlots;
+        unsigned fresh =
+            static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(
+                _mm_loadl_epi64(reinterpret_cast<const __m128i*>(pending)), _mm_setzero_si128()))) &
+            slots;
+        while (fresh != 0) {
+            const unsigned s = static_cast<unsigned>(__builtin_ctz(fresh));
+            pending[s] = 1;
+            bounds.fresh[s * n + bounds.fresh_count[s]++] = c;
+            fresh &= fresh - 1;
+        }
+    }
+    _mm512_storeu_si512(bounds.highest, highest);
+    for (unsigned s = 0; s < kSlots; ++s) {
+        if ((slots >> s & 1u) != 0) {
+            add_scaled_rows_avx512_strided(table + s * lanes, columns, n, rows, b + s * lanes,
+                                           b_quotients + s * lanes, p, lanes, kSlots * lanes);
+        }
+    }
 }
 
 LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t* halves,
@@ -393,20 +405,28 @@ LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t*
     }
 }
 
-// The bounded kernel of an instruction set without a fused one: the kernel, then the bounds.
+// add_scaled_rows_together of an instruction set without gathers: per slot, the kernel's
+// multiply-add on one term (at column 0 of the slot's place) and the bounds one by one.
 template <void (*Kernel)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
                          const std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
                          std::size_t)>
-void add_scaled_rows_then_bounds(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
-                                 const std::uint32_t* rows, const std::uint32_t* b,
-                                 const std::uint32_t* b_quotients, const std::uint32_t* p,
-                                 std::size_t lanes, ColumnBounds& bounds) {
-    Kernel(table, columns, n, rows, b, b_quotients, p, lanes);
-    BoundsInLoop raise(bounds);
+void add_scaled_rows_together_by_slot(std::uint32_t* table, const std::uint32_t* columns,
+                                      std::size_t n, const std::uint32_t* rows, unsigned slots,
+                                      const std::uint32_t* b, const std::uint32_t* b_quotients,
+                                      const std::uint32_t* p, std::size_t lanes,
+                                      SlotBounds& bounds) {
+    const std::uint32_t first = 0;
     for (std::size_t t = 0; t < n; ++t) {
-        raise(t, columns[t]);
+        const std::uint32_t c = columns[t];
+        for (std::size_t s = 0; s < kSlots; ++s) {
+            if ((slots >> s & 1u) == 0) {
+                continue;
+            }
+            raise_slot(bounds, s, c, bounds.term[t], n);
+            Kernel(table + (static_cast<std::size_t>(c) * kSlots + s) * lanes, &first, 1,
+                   rows + t * lanes, b + s * lanes, b_quotients + s * lanes, p, lanes);
+        }
     }
-    raise.finish();
 }
 
 struct Kernels {
@@ -418,19 +438,19 @@ struct Kernels {
                             std::size_t);
     void (*combine_digits)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
                            const std::uint32_t*, const std::uint32_t*, std::size_t);
-    void (*add_scaled_rows_bounded)(std::uint32_t*, const std::uint32_t*, std::size_t,
-                                    const std::uint32_t*, const std::uint32_t*,
-                                    const std::uint32_t*, const std::uint32_t*, std::size_t,
-                                    ColumnBounds&);
+    void (*add_scaled_rows_together)(std::uint32_t*, const std::uint32_t*, std::size_t,
+                                     const std::uint32_t*, unsigned, const std::uint32_t*,
+                                     const std::uint32_t*, const std::uint32_t*, std::size_t,
+                                     SlotBounds&);
 };
 
 constexpr Kernels kPortable{"portable", multiply_portable, add_scaled_rows_portable,
                             combine_digits_portable,
-                            add_scaled_rows_then_bounds<add_scaled_rows_portable>};
+                            add_scaled_rows_together_by_slot<add_scaled_rows_portable>};
 constexpr Kernels kAvx2{"avx2", multiply_avx2, add_scaled_rows_avx2, combine_digits_avx2,
-                        add_scaled_rows_then_bounds<add_scaled_rows_avx2>};
+                        add_scaled_rows_together_by_slot<add_scaled_rows_avx2>};
 constexpr Kernels kAvx512{"avx512", multiply_avx512, add_scaled_rows_avx512, combine_digits_avx512,
-                          add_scaled_rows_bounded_avx512};
+                          add_scaled_rows_together_avx512};
 
 KernelChoice<Kernels>& choice() {
     static KernelChoice<Kernels> kernels(kPortable, kAvx2, kAvx512);
@@ -535,15 +555,15 @@ void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::si
                               primes.size());
 }
 
-void add_scaled_rows_bounded(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
-                             const std::uint32_t* rows, const std::uint32_t* b,
-                             const std::uint32_t* b_quotients, const LanePrimes& primes,
-                             ColumnBounds& bounds) {
-    if (n == 0) {
+void add_scaled_rows_together(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                              const std::uint32_t* rows, unsigned slots, const std::uint32_t* b,
+                              const std::uint32_t* b_quotients, const LanePrimes& primes,
+                              SlotBounds& bounds) {
+    if (n == 0 || slots == 0) {
         return;  // as add_scaled_rows
     }
-    kernels().add_scaled_rows_bounded(table, columns, n, rows, b, b_quotients, primes.primes(),
-                                      primes.size(), bounds);
+    kernels().add_scaled_rows_together(table, columns, n, rows, slots, b, b_quotients,
+                                       primes.primes(), primes.size(), bounds);
 }
 
 void combine_digits(std::uint32_t* out, const std::uint32_t* halves, std::size_t count,

@@ -65,27 +65,32 @@ void shoup_quotients(std::uint32_t* out, const std::uint32_t* b, const LanePrime
 void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
                      const std::uint32_t* rows, const std::uint32_t* b,
                      const std::uint32_t* b_quotients, const LanePrimes& primes);
-// The certification's bookkeeping beside add_scaled_rows (residue_zero_reducer.h): rigorous
-// bounds per column (log_bound.h units) raised by each term, and which columns are pending.
-// For each term t, at column c: bound[c] = of_sum(bound[c], offset + term[t]), highest = the
-// max of itself and that; a column whose pending byte is 0 gets 1 and is appended to fresh
-// (room for n), fresh_count counting them.
-struct ColumnBounds {
-    std::int64_t* bound;
-    const std::int64_t* term;
-    std::int64_t offset;
-    std::uint8_t* pending;
-    std::uint32_t* fresh;
-    std::size_t fresh_count;
-    std::int64_t highest;
+// The certification's reductions done together (ResidueZeroReducer::reduce_together): up to
+// kSlots reductions share one table, whose column c holds for slot s its K residues from
+// table[(c·kSlots + s)·K] (a column's slots side by side), with a rigorous bound per slot
+// (log_bound.h units) and a pending byte per slot at [c·kSlots + s]. (Slots padded to whole
+// cache lines, 24 lanes to 32, were slower on katsura-10: its table no longer fit the cache.)
+inline constexpr std::size_t kSlots = 8;
+struct SlotBounds {
+    std::int64_t* bound;         // kSlots a column
+    const std::int64_t* term;    // a term: added to each slot's offset
+    const std::int64_t* offset;  // kSlots
+    std::uint8_t* pending;       // kSlots a column
+    std::uint32_t* fresh;        // room for n a slot: slot s's from fresh + s·n
+    std::size_t* fresh_count;    // kSlots
+    std::int64_t* highest;       // kSlots
 };
-// add_scaled_rows and the ColumnBounds update in one loop over the terms: the scalar bound
-// work then runs beside the vector multiply-adds instead of after them (a loop of its own was
-// a sixth of katsura-10's certification).
-void add_scaled_rows_bounded(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
-                             const std::uint32_t* rows, const std::uint32_t* b,
-                             const std::uint32_t* b_quotients, const LanePrimes& primes,
-                             ColumnBounds& bounds);
+// For every slot s in `slots` (bit s set) and every term t < n, at column c = columns[t]:
+// the residues table[(c·kSlots + s)·K + l] += b[s·K + l]·rows[t·K + l] for l < K
+// (b_quotients[s·K …] = shoup_quotients of b's slot s); the bound [c·kSlots + s] raised to
+// of_sum(bound, offset[s] + term[t]) and highest[s] to the max of itself and that; and when
+// the pending byte is 0, it becomes 1 and c is appended to slot s's fresh columns. The row of
+// a term is read once for all the slots (the point of reducing together: katsura-11's rows
+// are 49 MB on 32 lanes, read from memory), the bounds of a column's slots raised together.
+void add_scaled_rows_together(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
+                              const std::uint32_t* rows, unsigned slots, const std::uint32_t* b,
+                              const std::uint32_t* b_quotients, const LanePrimes& primes,
+                              SlotBounds& bounds);
 // out = Σ_i halves[i]·powers[i·K …]·R⁻¹ for i < count: the residues of the integer whose
 // 32-bit digits are `halves` (least significant first) when powers[i] holds 2^(32·i) in
 // Montgomery form, or its Montgomery form when powers[i] holds 2^(32·(i+1)).

@@ -117,7 +117,13 @@ void ResidueZeroReducer::activate(std::size_t lanes) {
         slot = make_level(lanes);
     }
     active_ = slot.get();
+    // Columns numbered while another level was active; every value is zero between groups.
+    level().values.resize(table_.size() * lanes::kSlots * lanes, 0);
+    multipliers_.resize(lanes::kSlots * lanes);
+    quotients_.resize(lanes::kSlots * lanes);
     digits_.resize(lanes);
+    load_multiplier_.resize(lanes);
+    load_quotients_.resize(lanes);
     one_.resize(lanes);
     for (std::size_t l = 0; l < lanes; ++l) {
         one_[l] = level().system->primes().to_montgomery(l, 1);
@@ -136,12 +142,9 @@ std::uint32_t ResidueZeroReducer::column(const std::uint64_t* m) {
     const std::uint32_t c = table_.insert(m);
     if (c == in_heap_.size()) {
         in_heap_.push_back(0);
-        for (std::size_t k = 0; k < group_size_; ++k) {
-            Reduction& r = *reductions_[k];
-            r.values.resize(r.values.size() + r.lanes, 0);
-            r.bound.push_back(lb::kZero);
-            r.pending.push_back(0);
-        }
+        bound_.resize(bound_.size() + lanes::kSlots, lb::kZero);
+        pending_.resize(pending_.size() + lanes::kSlots, 0);
+        level().values.resize(level().values.size() + lanes::kSlots * lanes(), 0);
         reducer_rows_.add_column();
         rank_.push_back(0);
         const auto at = ordered_.insert(c).first;
@@ -168,8 +171,8 @@ std::int32_t ResidueZeroReducer::row_of(std::uint32_t c) {
 }
 
 void ResidueZeroReducer::push(Reduction& r, std::uint32_t c) {
-    if (r.pending[c] == 0) {
-        r.pending[c] = 1;
+    if (pending(r, c) == 0) {
+        pending(r, c) = 1;
         r.pending_columns.push_back(c);
         ++r.pending_count;
     }
@@ -185,14 +188,14 @@ void ResidueZeroReducer::compact_pending(Reduction& r) {
     // A column popped and made pending again is listed twice: marked 2 when first kept.
     std::size_t kept = 0;
     for (const std::uint32_t c : r.pending_columns) {
-        if (r.pending[c] == 1) {
-            r.pending[c] = 2;
+        if (pending(r, c) == 1) {
+            pending(r, c) = 2;
             r.pending_columns[kept++] = c;
         }
     }
     r.pending_columns.resize(kept);
     for (const std::uint32_t c : r.pending_columns) {
-        r.pending[c] = 1;
+        pending(r, c) = 1;
     }
 }
 
@@ -206,22 +209,25 @@ bool ResidueZeroReducer::add_multiple(Reduction& r, const std::uint32_t* multipl
     for (std::size_t j = from; j < p.size(); ++j) {
         layout_.multiply(p.monomial(j, w), m, product_.data());
         const std::uint32_t c = column(product_.data());
-        const lb::Units bound =
-            lb::of_sum(r.true_bound(c), lb::of_product(multiplier_bound, bounds[j - from]));
-        if (bound > level().system->capacity()) {
-            r.needed = bound;
+        const lb::Units sum =
+            lb::of_sum(true_bound(r, c), lb::of_product(multiplier_bound, bounds[j - from]));
+        if (sum > level().system->capacity()) {
+            r.needed = sum;
             return false;
         }
         touched_.push_back(c);
-        touched_bounds_.push_back(bound);
+        touched_bounds_.push_back(sum);
     }
-    lanes::shoup_quotients(r.quotients.data(), multiplier, level().system->primes());
-    lanes::add_scaled_rows(r.values.data(), touched_.data(), touched_.size(), rows, multiplier,
-                           r.quotients.data(), level().system->primes());
+    const LanePrimes& primes = level().system->primes();
+    lanes::shoup_quotients(load_quotients_.data(), multiplier, primes);
+    const std::uint32_t first = 0;
     for (std::size_t t = 0; t < touched_.size(); ++t) {
         const std::uint32_t c = touched_[t];
-        r.bound[c] = touched_bounds_[t] - r.offset;
-        r.highest_bound = std::max(r.highest_bound, r.bound[c]);
+        // One term at a time: the value's place is the slot's, not a plain table's.
+        lanes::add_scaled_rows(value(r, c), &first, 1, rows + t * lanes(), multiplier,
+                               load_quotients_.data(), primes);
+        bound(r, c) = touched_bounds_[t] - r.offset;
+        r.highest_bound = std::max(r.highest_bound, bound(r, c));
         push(r, c);
     }
     return true;
@@ -233,8 +239,6 @@ void ResidueZeroReducer::load(Reduction& r, const Job& job) {
     r.lambda_digits.resize(width);
     lanes::multiply(r.lambda_digits.data(), r.lambda.data(), level().system->digit_factors(),
                     level().system->primes());
-    r.multiplier.resize(width);
-    r.quotients.resize(width);
     r.factor.resize(width);
     r.offset = 0;
     r.highest_bound = lb::kZero;
@@ -251,9 +255,9 @@ void ResidueZeroReducer::load(Reduction& r, const Job& job) {
             level().system->residues(p.coefficients[j].get(), load_rows_.data() + j * width, false);
             load_bounds_[j] = lb::upper(p.coefficients[j].get());
         }
-        std::fill(r.multiplier.begin(), r.multiplier.end(), 1);
+        std::fill(load_multiplier_.begin(), load_multiplier_.end(), 1);
         std::fill(multiplier_.begin(), multiplier_.end(), 0);  // the monomial 1
-        loaded = add_multiple(r, r.multiplier.data(), 0, multiplier_.data(), p, 0,
+        loaded = add_multiple(r, load_multiplier_.data(), 0, multiplier_.data(), p, 0,
                               load_rows_.data(), load_bounds_.data());
     } else {
         const std::size_t w = layout_.words();
@@ -269,13 +273,13 @@ void ResidueZeroReducer::load(Reduction& r, const Job& job) {
         mpz_divexact(minus_b, elements_[job.first].leading, a);
         mpz_neg(minus_b, minus_b);
         mpz_divexact(a, elements_[job.second].leading, a);
-        level().system->residues(a, r.multiplier.data(), false);
-        loaded = add_multiple(r, r.multiplier.data(), lb::upper(a), mf.data(), f, 1,
+        level().system->residues(a, load_multiplier_.data(), false);
+        loaded = add_multiple(r, load_multiplier_.data(), lb::upper(a), mf.data(), f, 1,
                               level().elements[job.first].rows.data(),
                               elements_[job.first].term_bounds.data());
         if (loaded) {
-            level().system->residues(minus_b, r.multiplier.data(), false);
-            loaded = add_multiple(r, r.multiplier.data(), lb::upper(minus_b), mg.data(), g, 1,
+            level().system->residues(minus_b, load_multiplier_.data(), false);
+            loaded = add_multiple(r, load_multiplier_.data(), lb::upper(minus_b), mg.data(), g, 1,
                                   level().elements[job.second].rows.data(),
                                   elements_[job.second].term_bounds.data());
         }
@@ -287,10 +291,10 @@ void ResidueZeroReducer::load(Reduction& r, const Job& job) {
 
 void ResidueZeroReducer::finish(Reduction& r, Reduction::State state) {
     for (const std::uint32_t c : r.pending_columns) {
-        if (r.pending[c] != 0) {
-            std::fill_n(r.value(c), r.lanes, 0);
-            r.bound[c] = lb::kZero;
-            r.pending[c] = 0;
+        if (pending(r, c) != 0) {
+            std::fill_n(value(r, c), lanes(), 0);
+            bound(r, c) = lb::kZero;
+            pending(r, c) = 0;
         }
     }
     r.pending_columns.clear();
@@ -318,7 +322,7 @@ void ResidueZeroReducer::rebuild_pending(Reduction& r, std::uint32_t lc) {
     OwnedInteger owned_content;
     mpz_ptr content = owned_content.value;
     for (std::size_t h = 0; h < columns.size(); ++h) {
-        lanes::multiply(digits_.data(), r.value(columns[h]), r.lambda_digits.data(), primes);
+        lanes::multiply(digits_.data(), value(r, columns[h]), r.lambda_digits.data(), primes);
         level().system->reconstruct(digits_.data(), values[h].value);
         mpz_gcd(content, content, values[h].value);
     }
@@ -339,7 +343,7 @@ void ResidueZeroReducer::rebuild_pending(Reduction& r, std::uint32_t lc) {
             scale_lambda(r, r.factor.data());  // V/content = (Λ/content)·s
         } else {
             for (std::size_t h = 0; h < columns.size(); ++h) {
-                level().system->residues(values[h].value, r.value(columns[h]), false);
+                level().system->residues(values[h].value, value(r, columns[h]), false);
             }
             // Λ = 1: the residues are the values themselves now.
             r.lambda = one_;
@@ -350,8 +354,8 @@ void ResidueZeroReducer::rebuild_pending(Reduction& r, std::uint32_t lc) {
     r.offset = 0;
     r.highest_bound = lb::kZero;
     for (std::size_t h = 0; h < columns.size(); ++h) {
-        r.bound[columns[h]] = lb::upper(values[h].value);
-        r.highest_bound = std::max(r.highest_bound, r.bound[columns[h]]);
+        bound(r, columns[h]) = lb::upper(values[h].value);
+        r.highest_bound = std::max(r.highest_bound, bound(r, columns[h]));
     }
 }
 
@@ -363,7 +367,7 @@ bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const Reduc
     const std::uint32_t* columns = reducer_rows_.columns_of(row);
     const lb::Units capacity = level().system->capacity();
     for (;;) {
-        const std::uint32_t* s = r.value(c);
+        const std::uint32_t* s = value(r, c);
         // g = gcd(V, L) for the fraction-free value V = Λ·s of the leading coefficient, from
         // V mod L; a = L/g multiplies p (and Λ) when g ≠ L.
         lb::Units gcd_lower = 0;
@@ -387,13 +391,12 @@ bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const Reduc
             }
         }
         // The bounds after a·p − b·m·g, b = V/g, checked before anything changes.
-        const lb::Units b_bound = r.true_bound(c) - gcd_lower;
+        const lb::Units b_bound = true_bound(r, c) - gcd_lower;
         const lb::Units offset = scaled ? r.offset + lb::upper(cofactor_) : r.offset;
-        // Bounds relative to the new offset (those of r.bound are: multiplying by a moves
-        // only the offset). Every new bound is at most the sum of the highest pending one and
-        // the largest product; when that fits, the step goes ahead and the bounds are
-        // computed with the pushes, in one pass after the kernel. Otherwise each is computed
-        // first.
+        // Bounds relative to the new offset (those of bound_ are: multiplying by a moves only
+        // the offset). Every new bound is at most the sum of the highest pending one and the
+        // largest product; when that fits, the step goes ahead and the bounds are computed
+        // with the pushes, in one pass after the kernel. Otherwise each is computed first.
         const lb::Units relative_b = b_bound - offset, limit = capacity - offset;
         const bool surely_fits =
             lb::of_sum(r.highest_bound, relative_b + e.largest_term_bound) <= limit;
@@ -402,13 +405,13 @@ bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const Reduc
             lb::Units highest = lb::kZero;
             for (std::size_t t = 0; t < length; ++t) {
                 highest = std::max(highest,
-                                   lb::of_sum(r.bound[columns[t]], relative_b + e.term_bounds[t]));
+                                   lb::of_sum(bound(r, columns[t]), relative_b + e.term_bounds[t]));
             }
             fits = fits && highest <= limit;
             if (!fits) {
                 if (r.just_rebuilt || r.rebuilds == kRebuildsBeforeMoreLanes) {
-                    std::fill_n(r.value(c), r.lanes, 0);
-                    r.bound[c] = lb::kZero;
+                    std::fill_n(value(r, c), lanes(), 0);
+                    bound(r, c) = lb::kZero;
                     r.needed = std::max(scaled ? r.highest_bound : lb::kZero, highest) + r.offset;
                     finish(r, Reduction::State::exhausted);
                     return false;
@@ -421,9 +424,10 @@ bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const Reduc
         }
         r.just_rebuilt = false;
         // In residues: s ← s − (s_c/L)·m·g.
-        lanes::multiply(r.multiplier.data(), s, el.leading_inverse.data(), primes);
-        lanes::negate(r.multiplier.data(), primes);
-        lanes::shoup_quotients(r.quotients.data(), r.multiplier.data(), primes);
+        std::uint32_t* multiplier = multipliers_.data() + r.slot * lanes();
+        lanes::multiply(multiplier, s, el.leading_inverse.data(), primes);
+        lanes::negate(multiplier, primes);
+        lanes::shoup_quotients(quotients_.data() + r.slot * lanes(), multiplier, primes);
         r.scaled = scaled;
         if (scaled) {
             level().system->residues(cofactor_, r.factor.data(), true);
@@ -434,42 +438,54 @@ bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const Reduc
     }
 }
 
-void ResidueZeroReducer::make_step(Reduction& r, std::uint32_t c, const ReducerRows::Row& row) {
+void ResidueZeroReducer::make_steps(std::span<Reduction* const> taking, std::uint32_t c,
+                                    const ReducerRows::Row& row) {
     const Element& e = elements_[row.element];
     const ElementLanes& el = level().elements[row.element];
     const std::size_t length = basis_[row.element].poly.size() - 1;
-    std::fill_n(r.value(c), r.lanes, 0);
-    r.bound[c] = lb::kZero;
-    if (r.scaled) {
-        r.offset = r.step_offset;
-        scale_lambda(r, r.factor.data());
-    }
-    if (fresh_.size() < length) {
-        fresh_.resize(length);  // grown only: a resize per step zero-filled what it regrew
-    }
-    // The residues and the bounds in one pass over the terms.
-    lanes::ColumnBounds raise{r.bound.data(),   e.term_bounds.data(), r.relative_b,
-                              r.pending.data(), fresh_.data(),        0,
-                              r.highest_bound};
-    lanes::add_scaled_rows_bounded(r.values.data(), reducer_rows_.columns_of(row), length,
-                                   el.rows.data(), r.multiplier.data(), r.quotients.data(),
-                                   level().system->primes(), raise);
-    r.highest_bound = raise.highest;
-    for (std::size_t k = 0; k < raise.fresh_count; ++k) {
-        const std::uint32_t fresh = fresh_[k];
-        r.pending_columns.push_back(fresh);
-        ++r.pending_count;
-        if (in_heap_[fresh] == 0) {
-            in_heap_[fresh] = 1;
-            heap_.push_back(fresh);
-            std::push_heap(heap_.begin(), heap_.end(), [this](std::uint32_t x, std::uint32_t y) {
-                return rank_[x] < rank_[y];
-            });
+    unsigned slots = 0;
+    for (Reduction* r : taking) {
+        std::fill_n(value(*r, c), lanes(), 0);
+        bound(*r, c) = lb::kZero;
+        if (r->scaled) {
+            r->offset = r->step_offset;
+            scale_lambda(*r, r->factor.data());
         }
+        slots |= 1u << r->slot;
+        slot_offsets_[r->slot] = r->relative_b;
+        slot_highest_[r->slot] = r->highest_bound;
+        fresh_counts_[r->slot] = 0;
     }
-    statistics_.reducer_terms += length;
-    statistics_.lane_terms += length * r.lanes;
-    ++r.steps;
+    if (fresh_.size() < lanes::kSlots * length) {
+        fresh_.resize(lanes::kSlots * length);  // grown only
+    }
+    // The residues and the bounds of every slot in one pass over the terms.
+    lanes::SlotBounds bounds{bound_.data(),       e.term_bounds.data(), slot_offsets_.data(),
+                             pending_.data(),     fresh_.data(),        fresh_counts_.data(),
+                             slot_highest_.data()};
+    lanes::add_scaled_rows_together(level().values.data(), reducer_rows_.columns_of(row), length,
+                                    el.rows.data(), slots, multipliers_.data(), quotients_.data(),
+                                    level().system->primes(), bounds);
+    const auto descending = [this](std::uint32_t x, std::uint32_t y) {
+        return rank_[x] < rank_[y];
+    };
+    for (Reduction* r : taking) {
+        r->highest_bound = slot_highest_[r->slot];
+        const std::uint32_t* fresh = fresh_.data() + r->slot * length;
+        for (std::size_t k = 0; k < fresh_counts_[r->slot]; ++k) {
+            r->pending_columns.push_back(fresh[k]);
+            if (in_heap_[fresh[k]] == 0) {
+                in_heap_[fresh[k]] = 1;
+                heap_.push_back(fresh[k]);
+                std::push_heap(heap_.begin(), heap_.end(), descending);
+            }
+        }
+        r->pending_count += fresh_counts_[r->slot];
+        ++r->steps;
+    }
+    statistics_.reducer_terms += length * taking.size();
+    statistics_.lane_terms += length * taking.size() * lanes();
+    statistics_.row_terms += length;
 }
 
 void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const std::size_t> members,
@@ -477,21 +493,8 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
     activate(lanes);
     while (reductions_.size() < members.size()) {
         reductions_.push_back(std::make_unique<Reduction>());
+        reductions_.back()->slot = reductions_.size() - 1;
     }
-    const std::size_t columns = table_.size();
-    for (std::size_t k = 0; k < members.size(); ++k) {
-        Reduction& r = *reductions_[k];
-        // Every value is zero between reductions: a new width only lays them out again.
-        if (r.lanes != lanes) {
-            r.values.assign(columns * lanes, 0);
-            r.lanes = lanes;
-        } else {
-            r.values.resize(columns * lanes, 0);
-        }
-        r.bound.resize(columns, lb::kZero);
-        r.pending.resize(columns, 0);
-    }
-    group_size_ = members.size();
     for (std::size_t k = 0; k < members.size(); ++k) {
         load(*reductions_[k], jobs[members[k]]);
     }
@@ -508,13 +511,13 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
             taking_.clear();
             for (std::size_t k = 0; k < members.size(); ++k) {
                 Reduction& r = *reductions_[k];
-                if (r.state != Reduction::State::running || r.pending[c] == 0) {
+                if (r.state != Reduction::State::running || pending(r, c) == 0) {
                     continue;
                 }
-                r.pending[c] = 0;
+                pending(r, c) = 0;
                 --r.pending_count;
-                if (lanes::is_zero(r.value(c), lanes)) {
-                    r.bound[c] = lb::kZero;
+                if (lanes::is_zero(value(r, c), lanes)) {
+                    bound(r, c) = lb::kZero;
                 } else {
                     taking_.push_back(&r);
                 }
@@ -528,22 +531,19 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
             const std::int32_t index = row_of(c);  // may number new columns: values may move
             if (index == ReducerRows::kIrreducible) {
                 for (Reduction* r : taking_) {
-                    std::fill_n(r->value(c), lanes, 0);
-                    r->bound[c] = lb::kZero;
+                    std::fill_n(value(*r, c), lanes, 0);
+                    bound(*r, c) = lb::kZero;
                     finish(*r, Reduction::State::not_zero);
                 }
                 continue;
             }
             const ReducerRows::Row row = reducer_rows_.row(index);
-            bool any = false;
-            for (Reduction* r : taking_) {
-                if (prepare_step(*r, c, row)) {
-                    make_step(*r, c, row);
-                    any = true;
-                }
-            }
-            if (any) {
-                statistics_.row_terms += basis_[row.element].poly.size() - 1;
+            // Those whose step does not fit even after a rebuild leave the group.
+            taking_.erase(std::remove_if(taking_.begin(), taking_.end(),
+                                         [&](Reduction* r) { return !prepare_step(*r, c, row); }),
+                          taking_.end());
+            if (!taking_.empty()) {
+                make_steps(taking_, c, row);
             }
             if (++rounds % 16 == 0 && deadline_passed(deadline_)) {
                 throw ReductionInterrupted{};
@@ -551,7 +551,6 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
         }
     } catch (...) {
         abandon_group(members.size());
-        group_size_ = 0;
         throw;
     }
     for (std::size_t k = 0; k < members.size(); ++k) {
@@ -562,7 +561,6 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
             r.state = Reduction::State::zero;
         }
     }
-    group_size_ = 0;
 }
 
 ResidueZeroReducer::Start& ResidueZeroReducer::start_of(std::uint32_t degree) {

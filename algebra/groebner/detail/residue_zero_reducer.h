@@ -30,6 +30,7 @@
 // and a multiplication of every other column whenever a ≠ 1) a term cost about 25 ns.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -46,6 +47,7 @@
 #include "algebra/groebner/detail/log_bound.h"
 #include "algebra/groebner/detail/reducer_rows.h"
 #include "algebra/groebner/detail/reduction.h"
+#include "algebra/groebner/detail/residue_lanes.h"
 #include "algebra/groebner/detail/residue_system.h"
 #include "algebra/monomial_table.h"
 
@@ -138,49 +140,44 @@ class ResidueZeroReducer {
         CacheAlignedVector<std::uint32_t> rows;         // c_j for j ≥ 1, Montgomery form
         std::optional<ResidueSystem::Divisor> divisor;  // for L > 1
     };
-    // The basis on one number of lanes. Reductions begin on the start level and move up when
-    // their values outgrow it.
+    // The basis on one number of lanes, and the values of the reductions under way on them.
+    // Reductions begin on the start level and move up when their values outgrow it.
     struct Level {
         std::unique_ptr<ResidueSystem> system;
         std::vector<ElementLanes> elements;
+        // Column c's values of slot s at (c·kSlots + s)·lanes (residue_lanes.h), of V/Λ.
+        CacheAlignedVector<std::uint32_t> values;
     };
     // Where the reductions of one degree begin, and how many begun there had to move up.
     struct Start {
         std::size_t lanes = 0, begun = 0, outgrown = 0;
     };
-    // One reduction under way: its values, their bounds and its common factor Λ. Between
-    // reductions every value is zero, every bound kZero and nothing is pending.
+    // One reduction under way, in a slot of the shared tables. Between reductions every value
+    // of a slot is zero, every bound kZero and nothing is pending.
     struct Reduction {
         enum class State : std::uint8_t { running, zero, not_zero, exhausted };
-        CacheAlignedVector<std::uint32_t> values;  // lanes per column, of V/Λ
-        std::size_t lanes = 0;                     // of `values`
+        std::size_t slot = 0;
         // Column bounds are kept relative to `offset`: the true bound of a pending column is
         // bound + offset, so multiplying every pending V by a adds log a to offset alone. A
         // column not pending is zero, with bound kZero (which stays far below any real bound
         // whatever offset is added).
-        std::vector<log_bound::Units> bound;
         log_bound::Units offset = 0;
         log_bound::Units highest_bound = log_bound::kZero;  // ≥ every pending bound
-        std::vector<std::uint8_t> pending;                  // the column waits for its step
         // The pending columns, and columns that were once (dropped by compact_pending).
         std::vector<std::uint32_t> pending_columns;
         std::size_t pending_count = 0;
         std::vector<std::uint32_t> lambda;         // Λ, Montgomery form
         std::vector<std::uint32_t> lambda_digits;  // Λ·digit_factors(), Montgomery form
-        // The step being made: its multiplier −s_c/L and Shoup's quotients of it, the factor
-        // a = L/g of Λ when `scaled`, and the offset and relative b bound after it.
-        std::vector<std::uint32_t> multiplier, quotients, factor;
+        // The step being made (its multiplier is in multipliers_): the factor a = L/g of Λ
+        // when `scaled`, and the offset and relative b bound after it.
+        std::vector<std::uint32_t> factor;
         bool scaled = false;
         log_bound::Units step_offset = 0, relative_b = 0;
         std::size_t rebuilds = 0;
         bool just_rebuilt = false;
-        bool restarted = false;  // begun again on more lanes at least once
         State state = State::running;
         log_bound::Units needed = 0;  // when exhausted: the bound that did not fit
         std::size_t steps = 0;
-
-        std::uint32_t* value(std::uint32_t column) { return values.data() + column * lanes; }
-        log_bound::Units true_bound(std::uint32_t column) const { return bound[column] + offset; }
     };
 
     std::uint32_t column(const std::uint64_t* m);
@@ -188,6 +185,18 @@ class ResidueZeroReducer {
     std::int32_t row_of(std::uint32_t column);
     Level& level() { return *active_; }
     std::size_t lanes() const { return active_->system->lanes(); }
+    std::uint32_t* value(const Reduction& r, std::uint32_t column) {
+        return level().values.data() + (column * lanes::kSlots + r.slot) * lanes();
+    }
+    log_bound::Units& bound(const Reduction& r, std::uint32_t column) {
+        return bound_[column * lanes::kSlots + r.slot];
+    }
+    std::uint8_t& pending(const Reduction& r, std::uint32_t column) {
+        return pending_[column * lanes::kSlots + r.slot];
+    }
+    log_bound::Units true_bound(const Reduction& r, std::uint32_t column) const {
+        return bound_[column * lanes::kSlots + r.slot] + r.offset;
+    }
 
     std::unique_ptr<Level> make_level(std::size_t lanes) const;
     // Makes the level of `lanes` lanes the one in use, building it first if need be.
@@ -195,13 +204,13 @@ class ResidueZeroReducer {
     // The start of the reductions of `degree` (set from the degree below when new).
     Start& start_of(std::uint32_t degree);
     std::uint32_t degree_of(const Job& job) const;
-    // Reduces jobs[k] for the k in `members` together on `lanes` lanes, leaving each of the
-    // first members.size() reductions_ zero, not_zero or exhausted.
+    // Reduces jobs[k] for the k in `members` (at most kSlots) together on `lanes` lanes,
+    // leaving each of the first members.size() reductions_ zero, not_zero or exhausted.
     void run_group(std::span<const Job> jobs, std::span<const std::size_t> members,
                    std::size_t lanes);
     // Loads job into r: Λ = 1 and the job's terms as pending values (or r exhausted).
     void load(Reduction& r, const Job& job);
-    // r's values[column(m·t_j)] += multiplier·c_j for the terms j ≥ from of `p`, whose
+    // r's value[column(m·t_j)] += multiplier·c_j for the terms j ≥ from of `p`, whose
     // coefficients are `rows` with bounds `bounds`. False (r exhausted) when a bound would
     // not fit the lanes, before anything changes.
     bool add_multiple(Reduction& r, const std::uint32_t* multiplier,
@@ -212,7 +221,9 @@ class ResidueZeroReducer {
     // Readies r's step on its pending column c (rebuilding its values when the bounds would
     // not fit). False when r is exhausted instead.
     bool prepare_step(Reduction& r, std::uint32_t c, const ReducerRows::Row& row);
-    void make_step(Reduction& r, std::uint32_t c, const ReducerRows::Row& row);
+    // Makes the prepared steps of `taking` on column c, one pass over the row for them all.
+    void make_steps(std::span<Reduction* const> taking, std::uint32_t c,
+                    const ReducerRows::Row& row);
     // pending_columns holds each pending column once and no other.
     void compact_pending(Reduction& r);
     // Rebuilds r's pending values and that of `lc` in full, divides out their content and
@@ -234,10 +245,20 @@ class ResidueZeroReducer {
 
     MonomialTable table_;
     ReducerRows reducer_rows_;
+    // kSlots a column: each slot's bound (relative to its reduction's offset) and whether the
+    // column waits for its step there.
+    std::vector<log_bound::Units> bound_;
+    std::vector<std::uint8_t> pending_;
     // The columns some reduction of the group has pending, largest monomial on top, each once.
     std::vector<std::uint32_t> heap_;
     std::vector<std::uint8_t> in_heap_;
-    std::vector<std::uint32_t> fresh_;  // columns a step made pending
+    // What the row kernel reads and writes beside the values (residue_lanes.h's SlotBounds):
+    // each slot's multiplier and quotients (lanes() apart), offset, highest bound and the
+    // columns a step made pending.
+    CacheAlignedVector<std::uint32_t> multipliers_, quotients_;
+    std::array<log_bound::Units, lanes::kSlots> slot_offsets_{}, slot_highest_{};
+    std::array<std::size_t, lanes::kSlots> fresh_counts_{};
+    std::vector<std::uint32_t> fresh_;
     // The columns in the monomial order, and for each a rank that grows with it, so that the
     // heap compares two integers instead of two monomials. New ranks go halfway between their
     // neighbours' (all are renumbered when there is no room): the heap stays valid because
@@ -257,13 +278,11 @@ class ResidueZeroReducer {
     std::size_t first_lanes_ = 0;
     bool learn_ = true;
     std::map<std::uint32_t, Start> starts_;  // by degree
-    // The reductions of a group (the first of them); kept between groups so that their
-    // tables are reused.
+    // The reductions of a group (the first of them, in slots 0, 1, …).
     std::vector<std::unique_ptr<Reduction>> reductions_;
-    std::size_t group_size_ = 0;  // reductions_ in use
 
     // Scratch.
-    std::vector<std::uint32_t> digits_, one_;
+    std::vector<std::uint32_t> digits_, one_, load_multiplier_, load_quotients_;
     CacheAlignedVector<std::uint32_t> load_rows_;
     std::vector<log_bound::Units> load_bounds_;
     std::vector<mp_limb_t> remainder_;
