@@ -234,7 +234,8 @@ LOCUS_AVX512 inline __m512i shoup16(__m512i x, __m512i b, __m512i b_quotient,
 // kPrefetch asks for the column kPrefetchAhead terms on: a certification's shared table
 // (katsura-11: 12–18 MB) is read from the last-level cache, where 8 terms ahead took
 // katsura-11's certification from 17.5 to 16.0 s (katsura-10, whose table is 3.5 MB:
-// unchanged).
+// unchanged). The slots' bounds are prefetched as far ahead (16.4 -> 15.6 s; katsura-10
+// 1.50 -> 1.37 s).
 constexpr std::size_t kPrefetchAhead = 8;
 template <std::size_t kLanes, bool kPrefetch>
 LOCUS_AVX512 void add_scaled_rows_avx512_fixed(std::uint32_t* table, const std::uint32_t* columns,
@@ -361,6 +362,12 @@ LOCUS_AVX512 void add_scaled_rows_together_avx512(
     __m512i highest = _mm512_loadu_si512(bounds.highest);
     for (std::size_t t = 0; t < n; ++t) {
         const std::uint32_t c = columns[t];
+        if (t + kPrefetchAhead < n) {
+            const std::size_t ahead =
+                static_cast<std::size_t>(columns[t + kPrefetchAhead]) * kSlots;
+            _mm_prefetch(reinterpret_cast<const char*>(bounds.bound + ahead), _MM_HINT_T0);
+            _mm_prefetch(reinterpret_cast<const char*>(bounds.pending + ahead), _MM_HINT_T0);
+        }
         // The slots' bounds: of_sum for all of them at once, the sum table's entry computed
         // from its chord (log_bound.h) on 32-bit lanes (a gather of the entries cost 20 cycles).
         std::int64_t* bound = bounds.bound + static_cast<std::size_t>(c) * kSlots;
