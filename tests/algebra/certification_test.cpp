@@ -75,6 +75,11 @@ TEST(ResidueLanes, EveryKernelAgreesWithScalarArithmetic) {
             random_residues(table, true);
             random_residues(rows, true);
             random_residues(b, true);
+            // The extremes of the multiplier, where the floating-point estimate is nearest 2^32
+            // or exact.
+            b[0] = primes.prime(0) - 1;
+            b[1] = 0;
+            b[2] = 1;
             std::vector<std::uint32_t> columns(50);
             for (std::uint32_t c = 0; c < 50; ++c) {
                 columns[c] = c;

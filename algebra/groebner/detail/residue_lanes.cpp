@@ -85,6 +85,19 @@ void add_scaled_rows_portable(std::uint32_t* table, const std::uint32_t* columns
     }
 }
 
+// The estimate from 2^32/p in floating point is off by at most one either way; the remainder
+// tells which.
+void shoup_quotients_portable(std::uint32_t* out, const std::uint32_t* b, const std::uint32_t* p,
+                              const double* reciprocal, std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; ++l) {
+        const std::uint64_t numerator = static_cast<std::uint64_t>(b[l]) << 32;
+        auto q = static_cast<std::uint64_t>(static_cast<double>(b[l]) * reciprocal[l]);
+        const auto r = static_cast<std::int64_t>(numerator - q * p[l]);
+        q = r < 0 ? q - 1 : (r >= static_cast<std::int64_t>(p[l]) ? q + 1 : q);
+        out[l] = static_cast<std::uint32_t>(q);
+    }
+}
+
 void combine_digits_portable(std::uint32_t* out, const std::uint32_t* halves, std::size_t count,
                              const std::uint32_t* powers, const std::uint32_t* p,
                              const std::uint32_t* ninv, std::size_t lanes) {
@@ -409,6 +422,26 @@ LOCUS_AVX512 void add_scaled_rows_together_avx512(
     }
 }
 
+// shoup_quotients_portable on 8 lanes at a time. The estimate is below 2^32 (b < p < 2^31
+// puts the exact quotient below 2^32 − 2), so it converts to 32 bits unsaturated.
+LOCUS_AVX512 void shoup_quotients_avx512(std::uint32_t* out, const std::uint32_t* b,
+                                         const std::uint32_t* p, const double* reciprocal,
+                                         std::size_t lanes) {
+    for (std::size_t l = 0; l < lanes; l += 8) {
+        const __m256i b8 = load8(b + l);
+        const __m512i p64 = _mm512_cvtepu32_epi64(load8(p + l));
+        const __m512d estimate =
+            _mm512_mul_pd(_mm512_cvtepu32_pd(b8), _mm512_loadu_pd(reciprocal + l));
+        __m512i q = _mm512_cvtepu32_epi64(_mm512_cvttpd_epu32(estimate));
+        const __m512i numerator = _mm512_slli_epi64(_mm512_cvtepu32_epi64(b8), 32);
+        const __m512i r = _mm512_sub_epi64(numerator, _mm512_mul_epu32(q, p64));
+        const __m512i one = _mm512_set1_epi64(1);
+        q = _mm512_mask_sub_epi64(q, _mm512_cmplt_epi64_mask(r, _mm512_setzero_si512()), q, one);
+        q = _mm512_mask_add_epi64(q, _mm512_cmpge_epi64_mask(r, p64), q, one);
+        store8(out + l, _mm512_cvtepi64_epi32(q));
+    }
+}
+
 LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t* halves,
                                         std::size_t count, const std::uint32_t* powers,
                                         const std::uint32_t* p, const std::uint32_t* ninv,
@@ -464,15 +497,28 @@ struct Kernels {
                                      const std::uint32_t*, unsigned, const std::uint32_t*,
                                      const std::uint32_t*, const std::uint32_t*, std::size_t,
                                      SlotBounds&);
+    void (*shoup_quotients)(std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
+                            const double*, std::size_t);
 };
 
-constexpr Kernels kPortable{"portable", multiply_portable, add_scaled_rows_portable,
+constexpr Kernels kPortable{"portable",
+                            multiply_portable,
+                            add_scaled_rows_portable,
                             combine_digits_portable,
-                            add_scaled_rows_together_by_slot<add_scaled_rows_portable>};
-constexpr Kernels kAvx2{"avx2", multiply_avx2, add_scaled_rows_avx2, combine_digits_avx2,
-                        add_scaled_rows_together_by_slot<add_scaled_rows_avx2>};
-constexpr Kernels kAvx512{"avx512", multiply_avx512, add_scaled_rows_avx512, combine_digits_avx512,
-                          add_scaled_rows_together_avx512};
+                            add_scaled_rows_together_by_slot<add_scaled_rows_portable>,
+                            shoup_quotients_portable};
+constexpr Kernels kAvx2{"avx2",
+                        multiply_avx2,
+                        add_scaled_rows_avx2,
+                        combine_digits_avx2,
+                        add_scaled_rows_together_by_slot<add_scaled_rows_avx2>,
+                        shoup_quotients_portable};
+constexpr Kernels kAvx512{"avx512",
+                          multiply_avx512,
+                          add_scaled_rows_avx512,
+                          combine_digits_avx512,
+                          add_scaled_rows_together_avx512,
+                          shoup_quotients_avx512};
 
 KernelChoice<Kernels>& choice() {
     static KernelChoice<Kernels> kernels(kPortable, kAvx2, kAvx512);
@@ -553,16 +599,7 @@ bool is_zero(const std::uint32_t* x, std::size_t lanes) {
 }
 
 void shoup_quotients(std::uint32_t* out, const std::uint32_t* b, const LanePrimes& primes) {
-    const std::uint32_t* p = primes.primes();
-    const double* reciprocal = primes.reciprocals();
-    for (std::size_t l = 0; l < primes.size(); ++l) {
-        // The estimate from 2^32/p in floating point is off by at most one either way.
-        const std::uint64_t numerator = static_cast<std::uint64_t>(b[l]) << 32;
-        auto q = static_cast<std::uint64_t>(static_cast<double>(b[l]) * reciprocal[l]);
-        const auto r = static_cast<std::int64_t>(numerator - q * p[l]);
-        q = r < 0 ? q - 1 : (r >= static_cast<std::int64_t>(p[l]) ? q + 1 : q);
-        out[l] = static_cast<std::uint32_t>(q);
-    }
+    kernels().shoup_quotients(out, b, primes.primes(), primes.reciprocals(), primes.size());
 }
 
 void add_scaled_rows(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,

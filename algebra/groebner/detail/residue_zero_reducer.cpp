@@ -93,11 +93,11 @@ std::unique_ptr<ResidueZeroReducer::Level> ResidueZeroReducer::make_level(std::s
     for (std::size_t k = 0; k < basis_.size(); ++k) {
         ElementLanes& el = level->elements[k];
         const Element& e = elements_[k];
-        el.leading_inverse.resize(lanes);
+        el.minus_leading_inverse.resize(lanes);
         for (std::size_t l = 0; l < lanes; ++l) {
             const std::uint32_t p = primes.prime(l);
             const auto inverse = static_cast<std::uint32_t>(n_invmod(mpz_fdiv_ui(e.leading, p), p));
-            el.leading_inverse[l] = primes.to_montgomery(l, inverse);
+            el.minus_leading_inverse[l] = primes.to_montgomery(l, p - inverse);  // L⁻¹ ≠ 0
         }
         const IntegerPolynomial& g = basis_[k].poly;
         el.rows.resize(g.size() > 1 ? (g.size() - 1) * lanes : 0);
@@ -425,8 +425,7 @@ bool ResidueZeroReducer::prepare_step(Reduction& r, std::uint32_t c, const Reduc
         r.just_rebuilt = false;
         // In residues: s ← s − (s_c/L)·m·g.
         std::uint32_t* multiplier = multipliers_.data() + r.slot * lanes();
-        lanes::multiply(multiplier, s, el.leading_inverse.data(), primes);
-        lanes::negate(multiplier, primes);
+        lanes::multiply(multiplier, s, el.minus_leading_inverse.data(), primes);
         lanes::shoup_quotients(quotients_.data() + r.slot * lanes(), multiplier, primes);
         r.scaled = scaled;
         if (scaled) {

@@ -143,9 +143,9 @@ class ResidueZeroReducer {
     };
     // The same element on the current lanes.
     struct ElementLanes {
-        std::vector<std::uint32_t> leading_inverse;     // L⁻¹, Montgomery form
-        CacheAlignedVector<std::uint32_t> rows;         // c_j for j ≥ 1, Montgomery form
-        std::optional<ResidueSystem::Divisor> divisor;  // for L > 1
+        std::vector<std::uint32_t> minus_leading_inverse;  // −L⁻¹, Montgomery form
+        CacheAlignedVector<std::uint32_t> rows;            // c_j for j ≥ 1, Montgomery form
+        std::optional<ResidueSystem::Divisor> divisor;     // for L > 1
     };
     // The basis on one number of lanes, and the values of the reductions under way on them.
     // Reductions begin on the start level and move up when their values outgrow it.
