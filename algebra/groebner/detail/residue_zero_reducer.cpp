@@ -538,9 +538,13 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
             }
             const ReducerRows::Row row = reducer_rows_.row(index);
             // Those whose step does not fit even after a rebuild leave the group.
-            taking_.erase(std::remove_if(taking_.begin(), taking_.end(),
-                                         [&](Reduction* r) { return !prepare_step(*r, c, row); }),
-                          taking_.end());
+            std::size_t ready = 0;
+            for (Reduction* r : taking_) {
+                if (prepare_step(*r, c, row)) {
+                    taking_[ready++] = r;
+                }
+            }
+            taking_.resize(ready);
             if (!taking_.empty()) {
                 make_steps(taking_, c, row);
             }
@@ -587,6 +591,12 @@ void ResidueZeroReducer::reduce_together(std::span<const Job> jobs, std::span<Ve
     // lanes are read faster, and a reduction that outgrows them starts again on more. When a
     // quarter of those begun on a degree's lanes have had to, the degree's start moves up. A
     // group begins on the widest start of its jobs' degrees.
+    if (jobs.size() > lanes::kSlots || verdicts.size() != jobs.size() ||
+        counts.size() != jobs.size()) {
+        throw std::invalid_argument(
+            "ResidueZeroReducer::reduce_together: at most kSlots jobs, "
+            "a verdict and a count for each");
+    }
     std::vector<std::size_t> members;
     std::size_t lanes = 0;
     for (std::size_t k = 0; k < jobs.size(); ++k) {
