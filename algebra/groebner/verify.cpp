@@ -102,6 +102,17 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         elements.push_back({detail::to_integer_polynomial(g), false});
         detail::gebauer_moller_update(elements, pairs, elements.size() - 1, layout, counts);
     }
+    // The pairs by the degree of their lcm, and within a degree from the largest lcm down:
+    // consecutive pairs are reduced together (below), and pairs of nearby lcms reach the same
+    // columns (katsura-11: each reducer row read for 6.8 reductions instead of 6.1, its
+    // certification 14.5 -> 13.6–13.9 s; ascending within a degree 6.6 and 14.8 s; cyclic-8
+    // and katsura-10 unchanged).
+    std::stable_sort(pairs.begin(), pairs.end(),
+                     [&](const detail::CriticalPair& x, const detail::CriticalPair& y) {
+                         const std::uint32_t dx = layout.total_degree(x.lcm.data());
+                         const std::uint32_t dy = layout.total_degree(y.lcm.data());
+                         return dx != dy ? dx < dy : layout.compare(x.lcm.data(), y.lcm.data()) > 0;
+                     });
     // One list of jobs: the generators (each must reduce to zero: the input lies in the ideal
     // of the basis), then the pairs. On several threads the generators are checked beside the
     // pairs: one of cyclic-8's (its degree-7 sum, 0.28 s of the eight's 0.3) held one core
