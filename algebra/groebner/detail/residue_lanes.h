@@ -84,9 +84,10 @@ struct SlotBounds {
 // the residues table[(c·kSlots + s)·K + l] += b[s·K + l]·rows[t·K + l] for l < K
 // (b_quotients[s·K …] = shoup_quotients of b's slot s); the bound [c·kSlots + s] raised to
 // of_sum(bound, offset[s] + term[t]) and highest[s] to the max of itself and that; and when
-// the pending byte is 0, it becomes 1 and c is appended to slot s's fresh columns. The row of
-// a term is read once for all the slots (the point of reducing together: katsura-11's rows
-// are 49 MB on 32 lanes, read from memory), the bounds of a column's slots raised together.
+// the pending byte is 0, it becomes 1 and c is appended to slot s's fresh columns. The rows
+// come from memory once for all the slots (the point of reducing together: katsura-11's rows
+// are 49 MB on 32 lanes); the AVX-512 kernel raises a column's slots' bounds together, then
+// makes a pass per slot over the rows, by then in the first-level cache.
 void add_scaled_rows_together(std::uint32_t* table, const std::uint32_t* columns, std::size_t n,
                               const std::uint32_t* rows, unsigned slots, const std::uint32_t* b,
                               const std::uint32_t* b_quotients, const LanePrimes& primes,
