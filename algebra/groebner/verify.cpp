@@ -132,18 +132,20 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
             all_jobs[k] = {nullptr, pair.first, pair.second, pair.lcm.data()};
         }
     }
-    // Consecutive jobs are reduced together (ZeroReducer::reduce_together): the pairs come in
-    // the order of their lcms' degrees, and those of a degree share most of their reducer rows.
-    const std::size_t groups =
-        (jobs + detail::ZeroReducer::kGroup - 1) / detail::ZeroReducer::kGroup;
+    // Consecutive jobs are reduced together (ZeroReducer::reduce_together): with the pairs
+    // sorted as above, those of a group share most of their reducer rows.
+    constexpr std::size_t kGroup = detail::ZeroReducer::kGroup;
+    const std::size_t groups = (jobs + kGroup - 1) / kGroup;
+    // Group g: jobs [g·kGroup, end_of(g)).
+    const auto end_of = [&](std::size_t g) { return std::min(jobs, (g + 1) * kGroup); };
     // Reduces group g; returns its first job that does not reduce to zero, or `jobs`.
     auto group_fails = [&](detail::ZeroReducer& r, std::size_t g,
                            detail::ReductionCounts& group_steps) {
-        const std::size_t from = g * detail::ZeroReducer::kGroup;
-        const std::size_t to = std::min(jobs, from + detail::ZeroReducer::kGroup);
-        const std::span<const detail::ZeroReducer::Job> group(all_jobs.data() + from, to - from);
-        std::array<bool, detail::ZeroReducer::kGroup> zero{};
-        std::array<detail::ReductionCounts, detail::ZeroReducer::kGroup> job_counts{};
+        const std::size_t from = g * kGroup;
+        const std::span<const detail::ZeroReducer::Job> group(all_jobs.data() + from,
+                                                              end_of(g) - from);
+        std::array<bool, kGroup> zero{};
+        std::array<detail::ReductionCounts, kGroup> job_counts{};
         r.reduce_together(group, std::span(zero.data(), group.size()),
                           std::span(job_counts.data(), group.size()));
         std::size_t failed = jobs;
@@ -166,13 +168,11 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         std::atomic<std::size_t> pairs_done{0};
         std::mutex reporting;
         const auto report = [&](std::size_t g) {
-            const std::size_t from = g * detail::ZeroReducer::kGroup;
-            const std::size_t to = std::min(jobs, from + detail::ZeroReducer::kGroup);
-            const std::size_t first_pair = std::max(from, inputs.size());
-            if (to <= first_pair) {
+            const std::size_t first_pair = std::max(g * kGroup, inputs.size());
+            if (end_of(g) <= first_pair) {
                 return;
             }
-            const std::size_t done = pairs_done += to - first_pair;
+            const std::size_t done = pairs_done += end_of(g) - first_pair;
             if (progress && reporting.try_lock()) {
                 progress(done, pairs.size());
                 reporting.unlock();
@@ -209,8 +209,7 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                         detail::ReductionCounts& local_steps = thread_steps.local();
                         for (std::size_t g = range.begin(); g < range.end(); ++g) {
                             // Groups after a known failure need no check.
-                            if (g * detail::ZeroReducer::kGroup >
-                                first_failure.load(std::memory_order_relaxed)) {
+                            if (g * kGroup > first_failure.load(std::memory_order_relaxed)) {
                                 return;
                             }
                             const std::size_t k = group_fails(local, g, local_steps);

@@ -67,6 +67,9 @@ ResidueZeroReducer::ResidueZeroReducer(const MonomialLayout& layout,
     mpz_inits(gcd_, cofactor_, scratch_, nullptr);
     product_.resize(layout.words());
     multiplier_.resize(layout.words());
+    for (std::size_t slot = 0; slot < lanes::kSlots; ++slot) {
+        reductions_[slot].slot = slot;
+    }
     first_lanes_ = lanes != 0 ? lanes : initial_lanes(basis);
     learn_ = learn;
     activate(first_lanes_);
@@ -108,6 +111,10 @@ std::unique_ptr<ResidueZeroReducer::Level> ResidueZeroReducer::make_level(std::s
             el.divisor = system.divisor(e.leading);
         }
     }
+    level->one.resize(lanes);
+    for (std::size_t l = 0; l < lanes; ++l) {
+        level->one[l] = primes.to_montgomery(l, 1);
+    }
     return level;
 }
 
@@ -124,11 +131,22 @@ void ResidueZeroReducer::activate(std::size_t lanes) {
     digits_.resize(lanes);
     load_multiplier_.resize(lanes);
     load_quotients_.resize(lanes);
-    one_.resize(lanes);
-    for (std::size_t l = 0; l < lanes; ++l) {
-        one_[l] = level().system->primes().to_montgomery(l, 1);
-    }
     statistics_.lanes = std::max(statistics_.lanes, lanes);
+}
+
+void ResidueZeroReducer::reset_lambda(Reduction& r) {
+    r.lambda = level().one;
+    r.lambda_digits.resize(lanes());
+    lanes::multiply(r.lambda_digits.data(), r.lambda.data(), level().system->digit_factors(),
+                    level().system->primes());
+}
+
+void ResidueZeroReducer::schedule(std::uint32_t c) {
+    if (in_heap_[c] == 0) {
+        in_heap_[c] = 1;
+        heap_.push_back(c);
+        std::push_heap(heap_.begin(), heap_.end(), by_rank());
+    }
 }
 
 void ResidueZeroReducer::scale_lambda(Reduction& r, const std::uint32_t* factor) {
@@ -176,12 +194,7 @@ void ResidueZeroReducer::push(Reduction& r, std::uint32_t c) {
         r.pending_columns.push_back(c);
         ++r.pending_count;
     }
-    if (in_heap_[c] == 0) {
-        in_heap_[c] = 1;
-        heap_.push_back(c);
-        std::push_heap(heap_.begin(), heap_.end(),
-                       [this](std::uint32_t x, std::uint32_t y) { return rank_[x] < rank_[y]; });
-    }
+    schedule(c);
 }
 
 void ResidueZeroReducer::compact_pending(Reduction& r) {
@@ -235,10 +248,7 @@ bool ResidueZeroReducer::add_multiple(Reduction& r, const std::uint32_t* multipl
 
 void ResidueZeroReducer::load(Reduction& r, const Job& job) {
     const std::size_t width = lanes();
-    r.lambda = one_;
-    r.lambda_digits.resize(width);
-    lanes::multiply(r.lambda_digits.data(), r.lambda.data(), level().system->digit_factors(),
-                    level().system->primes());
+    reset_lambda(r);
     r.factor.resize(width);
     r.offset = 0;
     r.highest_bound = lb::kZero;
@@ -304,7 +314,7 @@ void ResidueZeroReducer::finish(Reduction& r, Reduction::State state) {
 
 void ResidueZeroReducer::abandon_group(std::size_t members) {
     for (std::size_t k = 0; k < members; ++k) {
-        finish(*reductions_[k], Reduction::State::not_zero);
+        finish(reductions_[k], Reduction::State::not_zero);
     }
     for (const std::uint32_t c : heap_) {
         in_heap_[c] = 0;
@@ -345,10 +355,7 @@ void ResidueZeroReducer::rebuild_pending(Reduction& r, std::uint32_t lc) {
             for (std::size_t h = 0; h < columns.size(); ++h) {
                 level().system->residues(values[h].value, value(r, columns[h]), false);
             }
-            // Λ = 1: the residues are the values themselves now.
-            r.lambda = one_;
-            lanes::multiply(r.lambda_digits.data(), r.lambda.data(),
-                            level().system->digit_factors(), primes);
+            reset_lambda(r);  // the residues are the values themselves now
         }
     }
     r.offset = 0;
@@ -465,19 +472,12 @@ void ResidueZeroReducer::make_steps(std::span<Reduction* const> taking, std::uin
     lanes::add_scaled_rows_together(level().values.data(), reducer_rows_.columns_of(row), length,
                                     el.rows.data(), slots, multipliers_.data(), quotients_.data(),
                                     level().system->primes(), bounds);
-    const auto descending = [this](std::uint32_t x, std::uint32_t y) {
-        return rank_[x] < rank_[y];
-    };
     for (Reduction* r : taking) {
         r->highest_bound = slot_highest_[r->slot];
         const std::uint32_t* fresh = fresh_.data() + r->slot * length;
         for (std::size_t k = 0; k < fresh_counts_[r->slot]; ++k) {
             r->pending_columns.push_back(fresh[k]);
-            if (in_heap_[fresh[k]] == 0) {
-                in_heap_[fresh[k]] = 1;
-                heap_.push_back(fresh[k]);
-                std::push_heap(heap_.begin(), heap_.end(), descending);
-            }
+            schedule(fresh[k]);
         }
         r->pending_count += fresh_counts_[r->slot];
         ++r->steps;
@@ -490,26 +490,19 @@ void ResidueZeroReducer::make_steps(std::span<Reduction* const> taking, std::uin
 void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const std::size_t> members,
                                    std::size_t lanes) {
     activate(lanes);
-    while (reductions_.size() < members.size()) {
-        reductions_.push_back(std::make_unique<Reduction>());
-        reductions_.back()->slot = reductions_.size() - 1;
-    }
     for (std::size_t k = 0; k < members.size(); ++k) {
-        load(*reductions_[k], jobs[members[k]]);
+        load(reductions_[k], jobs[members[k]]);
     }
-    const auto descending = [this](std::uint32_t x, std::uint32_t y) {
-        return rank_[x] < rank_[y];
-    };
     std::size_t rounds = 0;
     try {
         while (!heap_.empty()) {
-            std::pop_heap(heap_.begin(), heap_.end(), descending);
+            std::pop_heap(heap_.begin(), heap_.end(), by_rank());
             const std::uint32_t c = heap_.back();
             heap_.pop_back();
             in_heap_[c] = 0;
             taking_.clear();
             for (std::size_t k = 0; k < members.size(); ++k) {
-                Reduction& r = *reductions_[k];
+                Reduction& r = reductions_[k];
                 if (r.state != Reduction::State::running || pending(r, c) == 0) {
                     continue;
                 }
@@ -557,7 +550,7 @@ void ResidueZeroReducer::run_group(std::span<const Job> jobs, std::span<const st
         throw;
     }
     for (std::size_t k = 0; k < members.size(); ++k) {
-        Reduction& r = *reductions_[k];
+        Reduction& r = reductions_[k];
         if (r.state == Reduction::State::running) {
             r.pending_columns.clear();  // every one was popped: none is pending
             r.pending_count = 0;
@@ -616,9 +609,9 @@ void ResidueZeroReducer::reduce_together(std::span<const Job> jobs, std::span<Ve
     std::vector<log_bound::Units> needed(members.size());
     std::vector<std::size_t> steps(members.size());
     for (std::size_t m = 0; m < members.size(); ++m) {
-        states[m] = reductions_[m]->state;
-        needed[m] = reductions_[m]->needed;
-        steps[m] = reductions_[m]->steps;
+        states[m] = reductions_[m].state;
+        needed[m] = reductions_[m].needed;
+        steps[m] = reductions_[m].steps;
     }
     for (std::size_t m = 0; m < members.size(); ++m) {
         const std::size_t k = members[m];
@@ -642,9 +635,9 @@ void ResidueZeroReducer::reduce_together(std::span<const Job> jobs, std::span<Ve
             at = existing != levels_.end() ? existing->first : wanted;
             const std::size_t alone[] = {k};
             run_group(jobs, alone, at);
-            states[m] = reductions_[0]->state;
-            needed[m] = reductions_[0]->needed;
-            steps[m] = reductions_[0]->steps;
+            states[m] = reductions_[0].state;
+            needed[m] = reductions_[0].needed;
+            steps[m] = reductions_[0].steps;
         }
         if (states[m] == Reduction::State::exhausted) {
             verdicts[k] = Verdict::too_wide;
@@ -660,28 +653,6 @@ void ResidueZeroReducer::reduce_together(std::span<const Job> jobs, std::span<Ve
             start = {above != levels_.end() ? above->first : next_lanes(start.lanes), 0, 0};
         }
     }
-}
-
-bool ResidueZeroReducer::reduces_to_zero(const IntegerPolynomial& p, ReductionCounts& counts) {
-    const Job job{&p, 0, 0, nullptr};
-    Verdict verdict = Verdict::zero;
-    reduce_together(std::span(&job, 1), std::span(&verdict, 1), std::span(&counts, 1));
-    if (verdict == Verdict::too_wide) {
-        throw TooWide{};
-    }
-    return verdict == Verdict::zero;
-}
-
-bool ResidueZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t j,
-                                                      const std::uint64_t* lcm,
-                                                      ReductionCounts& counts) {
-    const Job job{nullptr, i, j, lcm};
-    Verdict verdict = Verdict::zero;
-    reduce_together(std::span(&job, 1), std::span(&verdict, 1), std::span(&counts, 1));
-    if (verdict == Verdict::too_wide) {
-        throw TooWide{};
-    }
-    return verdict == Verdict::zero;
 }
 
 }  // namespace locus::algebra::detail

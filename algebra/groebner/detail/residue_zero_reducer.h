@@ -66,10 +66,6 @@ class ResidueZeroReducer {
     // Past this many lanes (about 7 900 bits) the integers are left to ExactZeroReducer: setting
     // up the lanes costs K² per coefficient and per step, which only long reductions repay.
     static constexpr std::size_t kMostLanes = 256;
-    // Thrown by the one-job reductions when the values need more lanes than that; the reducer
-    // is then left with nothing pending. (The constructor starts on initial_lanes() whatever it
-    // is.)
-    struct TooWide {};
     // The lanes the reducer starts on: room for the largest coefficient of the basis and 64
     // bits more, in multiples of 8, the width of the kernels (katsura-9: 16, katsura-10: 24).
     // Reductions whose values outgrow them start again on more.
@@ -103,15 +99,10 @@ class ResidueZeroReducer {
     // mostly the same columns: on katsura-10, eight consecutive pairs take the same row in
     // 5.8 of every 6.8 steps, and katsura-11's rows (49 MB on 32 lanes) stream from memory.
     // verdicts[k] and counts[k] (steps added) are those of jobs[k]; too_wide when the values
-    // need more than kMostLanes lanes (the job is then for ExactZeroReducer).
+    // need more than kMostLanes lanes (the job is then for ExactZeroReducer; the constructor
+    // starts on initial_lanes() whatever it is).
     void reduce_together(std::span<const Job> jobs, std::span<Verdict> verdicts,
                          std::span<ReductionCounts> counts);
-    // Whether p reduces to zero (throws TooWide as above).
-    bool reduces_to_zero(const IntegerPolynomial& p, ReductionCounts& counts);
-    // Whether the S-polynomial of basis[i] and basis[j], whose leading monomials have the lcm
-    // `lcm`, reduces to zero (throws TooWide as above).
-    bool s_polynomial_reduces_to_zero(std::size_t i, std::size_t j, const std::uint64_t* lcm,
-                                      ReductionCounts& counts);
 
     // Columns numbered so far: a measure of the memory held.
     std::size_t columns() const { return table_.size(); }
@@ -153,6 +144,7 @@ class ResidueZeroReducer {
     struct Level {
         std::unique_ptr<ResidueSystem> system;
         std::vector<ElementLanes> elements;
+        std::vector<std::uint32_t> one;  // 1 in Montgomery form: Λ at the start
         // Column c's values of slot s at (c·kSlots + s)·lanes (residue_lanes.h), of V/Λ.
         CacheAlignedVector<std::uint32_t> values;
     };
@@ -239,6 +231,14 @@ class ResidueZeroReducer {
     void rebuild_pending(Reduction& r, std::uint32_t lc);
     // Λ ← Λ·factor, for a factor given as Montgomery residues.
     void scale_lambda(Reduction& r, const std::uint32_t* factor);
+    // Λ = 1 (after a load, or a rebuild that left the values themselves in the residues).
+    void reset_lambda(Reduction& r);
+    // Puts column c in the heap unless it is there.
+    void schedule(std::uint32_t c);
+    // The heap's order: the largest monomial on top, compared by rank.
+    auto by_rank() const {
+        return [this](std::uint32_t x, std::uint32_t y) { return rank_[x] < rank_[y]; };
+    }
     // Ends r (not_zero or exhausted): every value it holds back to zero.
     void finish(Reduction& r, Reduction::State state);
     // Zeroes every pending value and empties the heap (after an interruption).
@@ -286,11 +286,11 @@ class ResidueZeroReducer {
     std::size_t first_lanes_ = 0;
     bool learn_ = true;
     std::map<std::uint32_t, Start> starts_;  // by degree
-    // The reductions of a group (the first of them, in slots 0, 1, …).
-    std::vector<std::unique_ptr<Reduction>> reductions_;
+    // The reductions of a group, the first of them, reductions_[s] in slot s.
+    std::array<Reduction, lanes::kSlots> reductions_;
 
     // Scratch.
-    std::vector<std::uint32_t> digits_, one_, load_multiplier_, load_quotients_;
+    std::vector<std::uint32_t> digits_, load_multiplier_, load_quotients_;
     CacheAlignedVector<std::uint32_t> load_rows_;
     std::vector<log_bound::Units> load_bounds_;
     std::vector<mp_limb_t> remainder_;

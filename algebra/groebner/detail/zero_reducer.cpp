@@ -29,31 +29,6 @@ ExactZeroReducer& ZeroReducer::exact() {
     return *exact_;
 }
 
-bool ZeroReducer::reduces_to_zero(const IntegerPolynomial& p, ReductionCounts& counts) {
-    if (residue_) {
-        try {
-            return residue_->reduces_to_zero(p, counts);
-        } catch (const ResidueZeroReducer::TooWide&) {
-            residue_statistics_ = residue_->statistics();
-            residue_.reset();
-        }
-    }
-    return exact().reduces_to_zero(p, counts);
-}
-
-bool ZeroReducer::s_polynomial_reduces_to_zero(std::size_t i, std::size_t j,
-                                               const std::uint64_t* lcm, ReductionCounts& counts) {
-    if (residue_) {
-        try {
-            return residue_->s_polynomial_reduces_to_zero(i, j, lcm, counts);
-        } catch (const ResidueZeroReducer::TooWide&) {
-            residue_statistics_ = residue_->statistics();
-            residue_.reset();
-        }
-    }
-    return exact().s_polynomial_reduces_to_zero(i, j, lcm, counts);
-}
-
 void ZeroReducer::reduce_together(std::span<const Job> jobs, std::span<bool> zero,
                                   std::span<ReductionCounts> counts) {
     std::vector<ResidueZeroReducer::Verdict> verdicts(jobs.size(),

@@ -34,18 +34,11 @@ class ZeroReducer {
     // Throws ReductionInterrupted once the deadline has passed (checked every 16 steps).
     void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
 
-    // Whether p reduces to zero.
-    bool reduces_to_zero(const IntegerPolynomial& p, ReductionCounts& counts);
-    // Whether the S-polynomial of basis[i] and basis[j], whose leading monomials have the lcm
-    // `lcm`, reduces to zero.
-    bool s_polynomial_reduces_to_zero(std::size_t i, std::size_t j, const std::uint64_t* lcm,
-                                      ReductionCounts& counts);
-
     // Whether each job reduces to zero (zero[k] for jobs[k]), reduced together while on
     // residues (ResidueZeroReducer::reduce_together), one after another on GMP integers.
     using Job = ResidueZeroReducer::Job;
-    // The jobs the certification reduces together.
-    static constexpr std::size_t kGroup = 8;
+    // The jobs the certification reduces together: a slot each (residue_lanes.h).
+    static constexpr std::size_t kGroup = lanes::kSlots;
     void reduce_together(std::span<const Job> jobs, std::span<bool> zero,
                          std::span<ReductionCounts> counts);
 
