@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/parse.h"
+#include "tests/support/ideal_cases.h"
 #include "tests/support/test_data.h"
 
 namespace locus::algebra::detail {
@@ -271,6 +273,21 @@ TEST(LogBound, SumBoundCoversBothSummands) {
     EXPECT_EQ(lb::of_sum(lb::kZero, 640), 641);  // zero adds the smallest unit
 }
 
+// Every entry of the sum table (chords between nodes, which the AVX-512 kernel evaluates) is at
+// or above the exact 64·log2(1 + 2^(−d/64)), computed here in long double, and at most 2 units
+// above that value rounded up (log_bound.h documents 2.11 units above the exact one).
+TEST(LogBound, EverySumTableEntryBoundsTheExactValue) {
+    for (std::size_t d = 0; d < lb::kSumTableSize; ++d) {
+        const long double exact =
+            lb::kPerBit * std::log2(1.0L + std::exp2(-static_cast<long double>(d) / lb::kPerBit));
+        ASSERT_GE(static_cast<long double>(lb::kSumTable[d]), exact) << d;
+        ASSERT_LE(static_cast<long double>(lb::kSumTable[d]), exact + 2.12L) << d;
+        ASSERT_LE(static_cast<long double>(lb::kSumTable[d]),
+                  std::max(1.0L, std::ceil(exact)) + 2.0L)
+            << d;
+    }
+}
+
 TEST(ResidueSystem, ReconstructsValuesAndTheirRemainders) {
     std::mt19937_64 rng(17);
     mpz_t v, back, l, expected;
@@ -473,6 +490,32 @@ TEST(ZeroReducers, JobsReducedTogetherMakeTheirOwnSteps) {
                                &narrow, 3),
               0u);
     EXPECT_GT(narrow.restarts, 0u);
+}
+
+// The same on inputs nobody chose: random ideals under every order the generator picks, their
+// bases from the multi-modular route, intact and with one coefficient changed, in groups of 8
+// on their own lanes and on 8.
+TEST(ZeroReducers, JobsReducedTogetherMatchGmpOnRandomIdeals) {
+    std::mt19937_64 rng(23);
+    std::size_t jobs = 0, corrupted_nonzero = 0;
+    for (int seed = 0; seed < test::seed_count(120); ++seed) {
+        const IdealFile ideal = test::random_ideal(rng, seed);
+        const GroebnerResult r = modular_groebner(ideal.generators);
+        if (r.basis.empty() || r.basis.front().is_constant()) {
+            continue;  // the unit ideal: no pairs
+        }
+        const std::string what = "random ideal " + std::to_string(seed);
+        const Certification good = certification_of(r.basis, ideal.generators);
+        jobs += good.generators.size() + good.pairs.size();
+        EXPECT_EQ(compare_reducers(good, 0, what, nullptr, 8), 0u);
+        EXPECT_EQ(compare_reducers(good, 8, what + " on 8 lanes", nullptr, 8), 0u);
+        const Certification bad = certification_of(
+            with_coefficient_changed(r.basis, r.basis.size() / 2), ideal.generators);
+        corrupted_nonzero += compare_reducers(bad, 0, what + ", corrupted", nullptr, 8);
+        compare_reducers(bad, 8, what + ", corrupted, on 8 lanes", nullptr, 8);
+    }
+    EXPECT_GT(jobs, 500u);
+    EXPECT_GT(corrupted_nonzero, 0u);
 }
 
 // The work counts the certification reports (`locus groebner --stats`): the same steps on

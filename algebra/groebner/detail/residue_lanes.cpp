@@ -382,7 +382,7 @@ LOCUS_AVX512 void add_scaled_rows_together_avx512(
             _mm_prefetch(reinterpret_cast<const char*>(bounds.pending + ahead), _MM_HINT_T0);
         }
         // The slots' bounds: of_sum for all of them at once, the sum table's entry computed
-        // from its chord (log_bound.h) on 32-bit lanes (a gather of the entries cost 20 cycles).
+        // from its chord (log_bound.h) on 32-bit lanes instead of gathered from the table.
         std::int64_t* bound = bounds.bound + static_cast<std::size_t>(c) * kSlots;
         const __m512i x = _mm512_loadu_si512(bound);
         const __m512i y = _mm512_add_epi64(offset, _mm512_set1_epi64(bounds.term[t]));
