@@ -575,5 +575,30 @@ TEST(ZeroReducers, HugeCoefficientsAreLeftToGmpIntegers) {
     EXPECT_FALSE(corrupted.ok);
 }
 
+// Constants of about 6 600 bits: the basis fits the residues at first (fewer than kMostLanes
+// lanes, checked), but its reductions outgrow them; the certification goes on on GMP integers
+// in the middle of a group, with the same verdicts, and says it used both (it reported 0 lanes
+// when it had given the residues up).
+TEST(ZeroReducers, ReductionsThatOutgrowTheLanesGoOnOnGmpIntegers) {
+    std::string a = "1", b = "3";
+    for (int k = 0; k < 2000; ++k) {
+        a += static_cast<char>('0' + (k * 7 + 3) % 10);
+        b += static_cast<char>('0' + (k * 3 + 1) % 10);
+    }
+    const IdealFile ideal = parse_ideal_file("vars: x,y,z\norder: grevlex\nx^2-" + a +
+                                             "*y*z\nx*y-" + b + "*z\ny^2-x*z\n");
+    const GroebnerResult r = buchberger(ideal.generators);
+    const Certification c = certification_of(r.basis, ideal.generators);
+    ASSERT_LE(ResidueZeroReducer::initial_lanes(c.elements), ResidueZeroReducer::kMostLanes);
+    const BasisCheck check = certify_groebner_basis(r.basis, ideal.generators);
+    EXPECT_TRUE(check.ok);
+    EXPECT_TRUE(check.work.exact_fallback);
+    EXPECT_GT(check.work.lanes, 0u);
+    EXPECT_GT(check.work.lane_restarts, 0u);
+    const BasisCheck corrupted =
+        certify_groebner_basis(with_coefficient_changed(r.basis, 0), ideal.generators);
+    EXPECT_FALSE(corrupted.ok);
+}
+
 }  // namespace
 }  // namespace locus::algebra::detail

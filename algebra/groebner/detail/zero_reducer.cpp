@@ -56,7 +56,7 @@ CertificationWork ZeroReducer::statistics() const {
     const ResidueZeroReducer::Statistics r =
         residue_ ? residue_->statistics() : residue_statistics_;
     CertificationWork work;
-    work.lanes = residue_ ? r.lanes : 0;
+    work.lanes = r.lanes;  // 0 when the residues were never used
     work.lane_restarts = r.restarts;
     work.rebuilds = r.rebuilds;
     work.reducer_terms = r.reducer_terms;

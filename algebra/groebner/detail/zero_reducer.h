@@ -42,8 +42,9 @@ class ZeroReducer {
     void reduce_together(std::span<const Job> jobs, std::span<bool> zero,
                          std::span<ReductionCounts> counts);
 
-    // Lanes at the end (0 on GMP integers only), restarts, rebuilds, and whether some reductions
-    // ran on GMP integers; reduction_steps are counted by the caller (ReductionCounts).
+    // The most lanes the residues used (0 on GMP integers only), restarts, rebuilds, and whether
+    // some reductions ran on GMP integers; reduction_steps are counted by the caller
+    // (ReductionCounts).
     CertificationWork statistics() const;
 
   private:
