@@ -20,6 +20,9 @@ void add_render_bench(CLI::App& app, cli::CommandContext& context);
 void add_png_bench(CLI::App& app, cli::CommandContext& context);
 // The server of `locus view` driven like the page: frames/s and latency (bench/view_bench.cpp).
 void add_view_bench(CLI::App& app, cli::CommandContext& context);
+// The certification's row kernel, eight reductions together against one a call
+// (bench/lanes_bench.cpp).
+void add_lanes_bench(CLI::App& app, cli::CommandContext& context);
 // Hart's speed-ups on the SDF scene suite (bench/sdf_bench.cpp).
 void add_sdf_bench(CLI::App& app, cli::CommandContext& context);
 

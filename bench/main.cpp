@@ -21,5 +21,6 @@ int main(int argc, char** argv) {
     bench::add_png_bench(app, context);
     bench::add_sdf_bench(app, context);
     bench::add_view_bench(app, context);
+    bench::add_lanes_bench(app, context);
     return cli::run_app(app, context, argc, argv, "locus-bench");
 }

@@ -1,10 +1,10 @@
 // Internal to algebra/: vectors whose data starts on a cache line, for the tables the lane
 // kernels read and write a whole vector register at a time (residue_lanes.h, the F4 replays on
 // lanes). glibc's malloc aligns to 16 bytes, so a 64-byte AVX-512 load or store of such a
-// table straddles two cache lines three times in four. Measured on the certification's row
-// kernel (32 lanes, 200 terms a step on random columns of a 4 546-column table): 3.38 ns a term
-// with the table and rows 16 bytes past a line, 2.10 ns on lines (/tmp microbenchmark,
-// 2026-11-29, the Zen 5 EPYC of docs/performance.md).
+// table straddles two cache lines three times in four. `locus-bench lanes` (the certification's
+// row kernel, 200 terms a step on random columns of a 4 546-column table, 2026-11-29): 3.99 ns
+// a term on 32 lanes with the table 16 bytes past a line, 3.08 ns on lines; 5.69 against 4.41
+// on 48.
 #pragma once
 
 #include <cstddef>

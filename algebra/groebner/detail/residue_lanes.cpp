@@ -355,7 +355,8 @@ LOCUS_AVX512 void add_scaled_rows_avx512(std::uint32_t* table, const std::uint32
 // The bounds of every slot for every term, then each slot's residues in a pass of its own:
 // with its multiplier in registers, the row (25 KB for 200 terms on 32 lanes) read again from
 // the first-level cache. One pass over the terms for all the slots, each reading its
-// multiplier from memory, was a third slower per slot and term (2026-11-29).
+// multiplier from memory, was a third slower per slot and term (2026-11-29, a throwaway
+// harness like `locus-bench lanes`; that variant was not committed).
 LOCUS_AVX512 void add_scaled_rows_together_avx512(
     std::uint32_t* table, const std::uint32_t* columns, std::size_t n, const std::uint32_t* rows,
     unsigned slots, const std::uint32_t* b, const std::uint32_t* b_quotients,
