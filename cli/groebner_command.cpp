@@ -39,14 +39,14 @@ void print_modular_stats(const algebra::ModularStats& s) {
                  "F4 on the first prime: %zu steps, %zu pairs reduced, %zu rows reduced to zero, "
                  "largest matrix %zu x %zu (%.2f %% non-zero), symbolic preprocessing %.6f s, "
                  "linear algebra %.6f s\n"
-                 "time: F4 %.6f s over all primes (replays %.6f s each), lifting %.6f s, "
-                 "certification %.6f s\n%s\n",
+                 "time: F4 %.6f s over all primes (replays %.6f s each), lifting %.6f s (lattices "
+                 "%.6f s), certification %.6f s\n%s\n",
                  s.primes_used.size(), s.unlucky_primes, s.replayed, s.traces_recorded,
                  s.replays_refused, s.replays_refused_set_aside, s.f4.steps, s.f4.pairs_reduced,
                  s.f4.zero_rows, s.f4.largest_rows, s.f4.largest_columns,
                  100.0 * s.f4.largest_density, s.f4.symbolic_seconds, s.f4.linear_algebra_seconds,
                  s.modular_seconds, s.replayed > 0 ? s.replay_seconds / s.replayed : 0.0,
-                 s.lift_seconds, s.certify_seconds,
+                 s.lift_seconds, s.lattice_seconds, s.certify_seconds,
                  s.certified ? "certified over Q: the input reduces to zero and every S-pair "
                                "left by the criteria reduces to zero"
                              : "NOT certified (--no-certify): the basis is probabilistic");

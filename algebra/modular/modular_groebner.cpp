@@ -54,6 +54,7 @@ struct Group {
     // Per element, a denominator its coefficients share (the lcm of those found so far, or
     // one found by simultaneous reconstruction): see reconstruct_term.
     std::vector<Integer> denominators;
+    double lattice_seconds = 0.0;  // spent by the attempts on lattices (see reconstruct)
     std::size_t primes() const { return lift.primes(); }
 };
 
@@ -189,17 +190,30 @@ bool reconstruct_term(modular::RationalLift::Attempt& attempt, Group& group, std
 // primes.
 // Polls `deadline` per element (the last reconstruction of a large basis takes a quarter of a
 // second: katsura-10).
+// The lattices of simultaneous reconstruction (reconstruct_term) save primes, and they pay where
+// a prime is dear; where primes are cheap they cost more than the primes they save: katsura5
+// under lex, whose primes take 60 µs each (a replay and FGLM), spent 4.6 of its 6.6 ms in
+// twelve lattices of 9 × 9 at up to 365 bits (80–650 µs each, FLINT's LLL) to use 14 primes,
+// and takes 2.3 ms in all without them on 18. So the group's lattices may take no more time
+// than the primes have taken so far (`prime_seconds`); the expensive cases stay far below it
+// (katsura-10: 36 lattices, 23 ms, against 0.3 s of primes). The number of primes then may
+// change from run to run with the clock, as it does with the random primes; the basis, unique
+// and certified, does not.
 std::optional<std::vector<Polynomial>> reconstruct(
-    Group& group, const RingPtr& ring, int threads,
+    Group& group, const RingPtr& ring, int threads, double prime_seconds,
     const std::optional<std::chrono::steady_clock::time_point>& deadline) {
     if (!group.lift.attempt_due()) {
         return std::nullopt;
     }
+    const bool lattices = group.lattice_seconds < prime_seconds;
     const std::size_t count = group.elements.size();
     if (group.hard_element < count && group.hard_term < group.elements[group.hard_element].size()) {
-        modular::RationalLift::Attempt attempt(group.lift);
+        modular::RationalLift::Attempt attempt(group.lift, lattices);
         Integer hint(1);
-        if (!reconstruct_term(attempt, group, group.hard_element, group.hard_term, hint)) {
+        const bool found =
+            reconstruct_term(attempt, group, group.hard_element, group.hard_term, hint);
+        group.lattice_seconds += attempt.lattice_seconds();
+        if (!found) {
             return std::nullopt;
         }
     }
@@ -212,7 +226,16 @@ std::optional<std::vector<Polynomial>> reconstruct(
     std::size_t failed_at = count;  // the earliest position that failed
     auto work = [&] {
         release_flint_caches_at_thread_exit();
-        modular::RationalLift::Attempt attempt(group.lift);
+        modular::RationalLift::Attempt attempt(group.lift, lattices);
+        struct CountLattices {  // on every way out of the loop
+            modular::RationalLift::Attempt& attempt;
+            Group& group;
+            std::mutex& mutex;
+            ~CountLattices() {
+                const std::lock_guard<std::mutex> lock(mutex);
+                group.lattice_seconds += attempt.lattice_seconds();
+            }
+        } count_lattices{attempt, group, failure_mutex};
         Integer hint(1);  // the last denominator found by this thread
         for (;;) {
             const std::size_t i = next++;
@@ -603,7 +626,9 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
             return result;
         }
         add_to_group(*group, basis, p, layout, threads);
-        group->candidate = reconstruct(*group, ring, threads, options.deadline);
+        const double lattices_before = group->lattice_seconds;
+        group->candidate = reconstruct(*group, ring, threads, s.modular_seconds, options.deadline);
+        s.lattice_seconds += group->lattice_seconds - lattices_before;
         if (options.progress) {
             GroebnerProgress progress;
             progress.stage = GroebnerProgress::Stage::primes;

@@ -53,6 +53,7 @@ struct ModularStats {
     modular::F4Stats f4;                     // of the first prime (the others repeat it)
     double modular_seconds = 0.0;            // all F4 runs
     double lift_seconds = 0.0;               // CRT and rational reconstruction
+    double lattice_seconds = 0.0;            // of lift_seconds, simultaneous reconstruction
     double certify_seconds = 0.0;
     bool certified = false;
     bool fglm = false;                          // computed under grevlex and converted by FGLM

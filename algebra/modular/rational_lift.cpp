@@ -7,6 +7,7 @@
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
+#include <chrono>
 #include <random>
 #include <utility>
 
@@ -65,7 +66,8 @@ bool RationalLift::attempt_due() {
     return true;
 }
 
-RationalLift::Attempt::Attempt(const RationalLift& lift) : lift_(lift) {
+RationalLift::Attempt::Attempt(const RationalLift& lift, bool lattices)
+    : lift_(lift), lattices_(lattices) {
     fmpz_comb_init(comb_, lift.primes_.data(), static_cast<slong>(lift.primes_.size()));
     fmpz_comb_temp_init(temp_, comb_);
     // over_denominator's bounds, the same for every number of the attempt.
@@ -141,9 +143,10 @@ std::optional<Integer> RationalLift::Attempt::common_denominator(
     std::span<LiftedNumber* const> numbers) {
     const auto k = static_cast<slong>(numbers.size());
     const fmpz* modulus = lift_.modulus_.get();
-    if (k < 2 || fmpz_bits(modulus) > kLatticeBits) {
+    if (!lattices_ || k < 2 || fmpz_bits(modulus) > kLatticeBits) {
         return std::nullopt;
     }
+    const auto start = std::chrono::steady_clock::now();
     // Rows: (1, r₁, …, r_k) and M·e_i; every lattice vector is (D, D·r_i − a_i·M).
     fmpz_mat_t lattice;
     fmpz_mat_init(lattice, k + 1, k + 1);
@@ -191,6 +194,8 @@ std::optional<Integer> RationalLift::Attempt::common_denominator(
         }
     }
     fmpz_mat_clear(lattice);
+    lattice_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return found;
 }
 
@@ -219,7 +224,7 @@ bool RationalLift::Attempt::reconstruct_sharing(
         fmpz_lcm(denominator.get(), denominator.get(), hint.get());
         return true;
     }
-    if (fmpz_bits(lift_.modulus_.get()) > kLatticeBits) {
+    if (!lattices_ || fmpz_bits(lift_.modulus_.get()) > kLatticeBits) {
         return false;
     }
     std::vector<LiftedNumber*> together{&number};

@@ -88,7 +88,9 @@ class RationalLift {
     // One attempt: the product tree of the current primes, for any number of reconstructions.
     class Attempt {
       public:
-        explicit Attempt(const RationalLift& lift);
+        // `lattices`: whether common_denominator may reduce lattices in this attempt (a
+        // caller's budget: see modular_groebner.cpp's reconstruct).
+        explicit Attempt(const RationalLift& lift, bool lattices = true);
         ~Attempt();
         Attempt(const Attempt&) = delete;
         Attempt& operator=(const Attempt&) = delete;
@@ -111,8 +113,11 @@ class RationalLift {
         // numerators below N and a common denominator D this needs about
         // log N + log max(N, D)/k bits where rational reconstruction of any one of them needs
         // log N + log D (cyclic-8: 1 334 bits for the latter, about 840 for k = 4, 760 for k = 8).
-        // Nothing when there is no such vector, and nothing past kLatticeBits of modulus.
+        // Nothing when there is no such vector, nothing past kLatticeBits of modulus, and
+        // nothing when the attempt was made without lattices.
         std::optional<Integer> common_denominator(std::span<LiftedNumber* const> numbers);
+        // The time this attempt spent reducing lattices.
+        double lattice_seconds() const { return lattice_seconds_; }
         // One of a group of numbers that share most of a denominator (the coefficients of one
         // polynomial): first over `denominator` (the group's, as far as known), then as a
         // plain rational, then over `hint` (the last denominator the caller found, often
@@ -134,6 +139,8 @@ class RationalLift {
         bool over_denominator(LiftedNumber& number, const Integer& denominator);
 
         const RationalLift& lift_;
+        bool lattices_;
+        double lattice_seconds_ = 0.0;
         fmpz_comb_t comb_;
         fmpz_comb_temp_t temp_;
         Integer residue_, scaled_, numerator_bound_, denominator_bound_;

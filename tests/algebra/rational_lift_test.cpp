@@ -194,6 +194,26 @@ TEST(RationalLift, SharedDenominatorsNeedAboutHalfThePrimes) {
     // about 500 · 5/4 + 32 bits.
     EXPECT_LE(primes_at_found, 24u);
     EXPECT_GE(primes_at_found, 20u);
+    {
+        // An attempt made without lattices (a caller's budget spent) reduces none, with the
+        // same primes, and says it spent no time on them; with them it timed its reduction.
+        std::vector<LiftedNumber*> four{&numbers[0], &numbers[1], &numbers[2], &numbers[3]};
+        RationalLift::Attempt without(lift, false);
+        EXPECT_FALSE(without.common_denominator(four).has_value());
+        Integer group_denominator(1), hint(1);
+        LiftedNumber copy;
+        copy.residues = numbers[0].residues;
+        EXPECT_FALSE(without.reconstruct_sharing(copy, group_denominator, hint, [&] {
+            return std::vector<LiftedNumber*>{&numbers[1], &numbers[2], &numbers[3]};
+        }));
+        EXPECT_EQ(without.lattice_seconds(), 0.0);
+        RationalLift::Attempt with(lift, true);
+        EXPECT_TRUE(with.reconstruct_sharing(copy, group_denominator, hint, [&] {
+            return std::vector<LiftedNumber*>{&numbers[1], &numbers[2], &numbers[3]};
+        }));
+        EXPECT_TRUE(fmpq_equal(copy.value.get(), truth[0].get()));
+        EXPECT_GT(with.lattice_seconds(), 0.0);
+    }
     RationalLift::Attempt attempt(lift);
     for (std::size_t i = 0; i < truth.size(); ++i) {
         ASSERT_TRUE(attempt.reconstruct(numbers[i], &*found)) << i;
