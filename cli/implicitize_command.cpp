@@ -173,8 +173,9 @@ void add_implicitize_command(CLI::App& app, CommandContext& context) {
     cmd->add_option("-p,--params", args->params, "parameters, comma-separated (inline form)");
     add_choice(cmd, "--method", args->method,
                {{"auto",
-                 "the default: for plane curves and surfaces groebner for 20 ms, then "
-                 "dixon (surfaces), interpolate, resultant"},
+                 "the default: dense surface maps (a numerator or denominator of 9 terms or "
+                 "more) dixon; other plane curves and surfaces groebner for 20 ms, then dixon "
+                 "(surfaces), interpolate, resultant"},
                 {"groebner", "elimination"},
                 {"resultant", "iterated Sylvester resultants"},
                 {"interpolate", "the kernel modulo primes"},

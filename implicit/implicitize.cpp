@@ -226,6 +226,20 @@ std::string describe_image(ImageKind kind, std::size_t num_params, std::size_t n
     return "";
 }
 
+namespace {
+
+// The most terms of a component's numerator or of the common denominator.
+std::size_t most_terms(const Parametrization& map) {
+    const CommonDenominatorForm form = over_common_denominator(map);
+    std::size_t most = form.denominator.num_terms();
+    for (const Polynomial& n : form.numerators) {
+        most = std::max(most, n.num_terms());
+    }
+    return most;
+}
+
+}  // namespace
+
 // Why this order: every classic case but one finishes elimination in under 5 ms (Enneper in
 // 1.2 ms, where interpolation needs 25 ms of primes), and interpolation answers where
 // elimination does not (the cubic Bézier triangle in 0.14 s, where resultants take 2.5 s and
@@ -240,7 +254,16 @@ ImplicitResult implicitize_auto(const Parametrization& map, const algebra::Groeb
     const std::size_t num_params = map.parameter_ring->num_vars();
     const bool one_equation = (num_params == 1 && map.coordinates.size() == 2) ||
                               (num_params == 2 && map.coordinates.size() == 3);
-    if (one_equation) {
+    // Dense surface maps go straight to the Dixon determinant, without the probe below: the
+    // Bézier patches of the bench (every numerator or denominator with 9–16 terms over a common
+    // denominator) never finished elimination in the probe's 20 ms, which then only added to
+    // Dixon's time (the rational biquadratic patch 3 → 25 ms, the teapot's 32 patches 0.3 s),
+    // while every classic map has at most 6 terms (Steiner's Roman surface, the trigonometric
+    // torus) and finishes elimination in under 5 ms. Decided from the map, not from time; a
+    // dense map whose image is not a surface still ends in elimination, below.
+    constexpr std::size_t kDenseTerms = 9;
+    const bool dense_surface = num_params == 2 && one_equation && most_terms(map) >= kDenseTerms;
+    if (one_equation && !dense_surface) {
         // A 20 ms Gröbner probe first: elimination wins on small maps with large coefficients
         // (Enneper: 1.2 ms against 25 ms of primes), interpolation on large supports.
         algebra::GroebnerOptions probe = options;
@@ -253,6 +276,8 @@ ImplicitResult implicitize_auto(const Parametrization& map, const algebra::Groeb
         } catch (const Timeout&) {
             // go on with the structured routes
         }
+    }
+    if (one_equation) {
         if (num_params == 2) {
             // The Dixon determinant: one characteristic polynomial per grid line and prime,
             // where interpolation needs an elimination of the whole support per prime (the

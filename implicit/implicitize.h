@@ -75,7 +75,9 @@ ImplicitResult implicitize_by_interpolation(
     std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 // The route `--method auto` takes: for plane curves and surfaces, Gröbner elimination for at
-// most 20 ms; for surfaces then the Dixon determinant (implicit/dixon.h); then interpolation
+// most 20 ms, except for dense surface maps (a numerator or the common denominator with 9 terms
+// or more: the Bézier patches), which skip it; for surfaces then the Dixon determinant
+// (implicit/dixon.h); then interpolation
 // modulo primes, then, if it gives up (the image is not a hypersurface, too many monomials),
 // resultants, then Gröbner elimination under options.deadline; space curves and other shapes go
 // to elimination directly. When a route gave up, `fallback_reason` (if given) receives why.

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "algebra/error.h"
 #include "algebra/parse.h"
 #include "algebra/print.h"
@@ -134,6 +136,29 @@ TEST(Implicitize, InterpolationAgreesOnEnneperAndTorusAndGivesUpOnDegenerateMaps
     // auto falls back to elimination there and still classifies the image.
     const ImplicitResult line =
         implicitize_auto(parse_parametrization("params: s,t\nx = s+t\ny = 2*s+2*t\nz = s+t+1\n"));
+    EXPECT_EQ(line.image, ImageKind::lower_dimensional);
+}
+
+// auto decides from the map whether elimination gets its probe: a surface map with a numerator
+// or denominator of 9 terms or more (every Bézier patch of the bench) goes straight to the
+// Dixon determinant, one with fewer (every classic map) is eliminated. The dense map here is a
+// graph, whose elimination would be instant: the decision is the map's shape, not the clock.
+// A dense map whose image is not a surface ends in elimination all the same.
+TEST(Implicitize, AutoSendsDenseSurfaceMapsToDixonWithoutTheEliminationProbe) {
+    const std::string nine = "(1 + s + t + s*t + s^2 + t^2 + s^2*t + s*t^2 + s^2*t^2)";
+    const Parametrization graph =
+        parse_parametrization("params: s,t\nx = s\ny = t\nz = " + nine + "\n");
+    const ImplicitResult dense = implicitize_auto(graph);
+    EXPECT_EQ(dense.method.rfind("dixon", 0), 0u) << dense.method;
+    ASSERT_TRUE(dense.equation.has_value());
+    EXPECT_EQ(dense.equation, implicitize(graph).equation);
+    // Eight terms: the probe, which eliminates it.
+    const ImplicitResult sparse = implicitize_auto(parse_parametrization(
+        "params: s,t\nx = s\ny = t\nz = 1 + s + t + s*t + s^2 + t^2 + s^2*t + s*t^2\n"));
+    EXPECT_EQ(sparse.method, "groebner");
+    // A dense map onto a line: Dixon and interpolation give up, elimination classifies it.
+    const ImplicitResult line = implicitize_auto(parse_parametrization(
+        "params: s,t\nx = " + nine + "\ny = 2*" + nine + "\nz = " + nine + " + 1\n"));
     EXPECT_EQ(line.image, ImageKind::lower_dimensional);
 }
 
