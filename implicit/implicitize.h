@@ -77,10 +77,10 @@ ImplicitResult implicitize_by_interpolation(
 // The route `--method auto` takes: for plane curves and surfaces, Gröbner elimination for at
 // most 20 ms, except for dense surface maps (a numerator or the common denominator with 9 terms
 // or more: the Bézier patches), which skip it; for surfaces then the Dixon determinant
-// (implicit/dixon.h); then interpolation
-// modulo primes, then, if it gives up (the image is not a hypersurface, too many monomials),
-// resultants, then Gröbner elimination under options.deadline; space curves and other shapes go
-// to elimination directly. When a route gave up, `fallback_reason` (if given) receives why.
+// (implicit/dixon.h); then interpolation modulo primes, then, if it gives up (the image is not
+// a hypersurface, too many monomials), resultants, then Gröbner elimination under
+// options.deadline; space curves and other shapes go to elimination directly. When a route gave up,
+// `fallback_reason` (if given) receives why.
 ImplicitResult implicitize_auto(const Parametrization& map,
                                 const algebra::GroebnerOptions& options = {},
                                 std::string* fallback_reason = nullptr);

@@ -461,8 +461,9 @@ LOCUS_AVX512 void combine_digits_avx512(std::uint32_t* out, const std::uint32_t*
     }
 }
 
-// add_scaled_rows_together of an instruction set without gathers: per slot, the kernel's
-// multiply-add on one term (at column 0 of the slot's place) and the bounds one by one.
+// add_scaled_rows_together of an instruction set without the AVX-512 slot kernel: per term and
+// slot, the bounds (raise_slot) and the kernel's multiply-add on that one term (at column 0 of
+// the slot's place).
 template <void (*Kernel)(std::uint32_t*, const std::uint32_t*, std::size_t, const std::uint32_t*,
                          const std::uint32_t*, const std::uint32_t*, const std::uint32_t*,
                          std::size_t)>

@@ -185,17 +185,22 @@ class ResidueZeroReducer {
     std::int32_t row_of(std::uint32_t column);
     Level& level() { return *active_; }
     std::size_t lanes() const { return active_->system->lanes(); }
+    // r's place at a column in the shared tables (residue_lanes.h's layout): bound_ and
+    // pending_ hold one entry there, the values lanes() of them.
+    static std::size_t place(const Reduction& r, std::uint32_t column) {
+        return static_cast<std::size_t>(column) * lanes::kSlots + r.slot;
+    }
     std::uint32_t* value(const Reduction& r, std::uint32_t column) {
-        return level().values.data() + (column * lanes::kSlots + r.slot) * lanes();
+        return level().values.data() + place(r, column) * lanes();
     }
     log_bound::Units& bound(const Reduction& r, std::uint32_t column) {
-        return bound_[column * lanes::kSlots + r.slot];
+        return bound_[place(r, column)];
     }
     std::uint8_t& pending(const Reduction& r, std::uint32_t column) {
-        return pending_[column * lanes::kSlots + r.slot];
+        return pending_[place(r, column)];
     }
     log_bound::Units true_bound(const Reduction& r, std::uint32_t column) const {
-        return bound_[column * lanes::kSlots + r.slot] + r.offset;
+        return bound_[place(r, column)] + r.offset;
     }
 
     std::unique_ptr<Level> make_level(std::size_t lanes) const;
