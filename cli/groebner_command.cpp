@@ -76,6 +76,15 @@ void print_modular_stats(const algebra::ModularStats& s) {
                          ? (work.lanes > 0 ? ", then on GMP integers" : " on GMP integers")
                          : "");
     }
+    if (s.equality) {
+        const algebra::IdealEquality& e = *s.equality;
+        std::fprintf(stderr, "ideal equality: %s: %s (%.6f s)%s\n",
+                     algebra::ideal_equality_status_name(e.status), e.argument.c_str(), e.seconds,
+                     e.status == algebra::IdealEquality::Status::proven
+                         ? ""
+                         : "; that the basis generates no more than the input rests on a lucky "
+                           "prime (Arnold's theorem)");
+    }
 }
 
 void print_stats(const algebra::GroebnerAnswer& answer, const algebra::PolyRing& ring) {

@@ -608,7 +608,12 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
                                                                 threads, certifying);
                 s.certify_seconds += seconds_since(certify_start);
                 s.certification += check.work;
-                if (!check.ok) {
+                if (check.ok) {
+                    // The other inclusion, where a Hilbert function argument gives it; a
+                    // refutation is a failed certification like the other.
+                    s.equality = prove_ideal_equality(candidate, inputs, options.deadline, threads);
+                }
+                if (!check.ok || s.equality->status == IdealEquality::Status::refuted) {
                     // Stable but wrong. Replays of an unlucky first prime would keep making
                     // the same wrong lift: start again from fresh F4 runs on more primes.
                     if (s.replayed > 0) {

@@ -8,7 +8,9 @@
 // input ideal lies in the ideal of the result, and every S-pair not removed by the product
 // criterion reduces to zero, so the result is a Gröbner basis. That the two ideals are equal
 // rests, as in Singular's modStd, on Arnold's theorem: it holds when one of the primes used
-// was lucky, which the majority vote makes overwhelmingly likely but does not prove.
+// was lucky, which the majority vote makes overwhelmingly likely but does not prove. Where a
+// Hilbert function argument applies (homogeneous inputs, square systems without zeros at
+// infinity: ideal_equality.h) the certification then proves the equality as well.
 #pragma once
 
 #include <algorithm>
@@ -24,6 +26,7 @@
 #include "algebra/groebner/signature_groebner.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/f4.h"
+#include "algebra/modular/ideal_equality.h"
 
 namespace locus::algebra {
 
@@ -63,6 +66,8 @@ struct ModularStats {
     std::size_t traces_recorded = 0;            // F4 runs recorded for replay (1 unless refused)
     double replay_seconds = 0.0;                // the successful replays, part of modular_seconds
     CertificationWork certification;            // over every attempt
+    // With `certified`: whether ⟨basis⟩ ⊆ ⟨input⟩ was proven too (ideal_equality.h).
+    std::optional<IdealEquality> equality;
     // Under `auto` (groebner_automatic): why its signature probe handed over, and how long it
     // ran (empty and 0 when it ran none).
     std::string probe;

@@ -173,6 +173,11 @@ py::dict stats_of(const algebra::GroebnerAnswer& a) {
         s["lift_seconds"] = a.modular->lift_seconds;
         s["certify_seconds"] = a.modular->certify_seconds;
         s["f4_seconds"] = a.modular->modular_seconds;
+        if (a.modular->equality) {
+            // "proven": the basis generates exactly the input's ideal (not only contains it).
+            s["ideal_equality"] = algebra::ideal_equality_status_name(a.modular->equality->status);
+            s["ideal_equality_argument"] = a.modular->equality->argument;
+        }
     }
     if (a.f4) {
         s["f4_steps"] = a.f4->steps;

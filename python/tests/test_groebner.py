@@ -31,6 +31,18 @@ def test_known_bases_under_every_algorithm(source_dir, name):
         assert str(basis) + "\n" == expected, algorithm
 
 
+def test_the_modular_route_proves_the_ideal_equal_where_it_can(source_dir):
+    # katsura-5 has no zeros at infinity: the basis generates exactly the input's ideal.
+    ideal = locus.read_ideal(str(source_dir / "bench/data/katsura5.ideal"))
+    basis = locus.groebner(ideal, algorithm="modular")
+    assert basis.stats["certified"] and basis.stats["ideal_equality"] == "proven"
+    # cyclic-5 has zeros at infinity: that half rests on a lucky prime, and the stats say so.
+    cyclic = locus.read_ideal(str(source_dir / "bench/data/cyclic5.ideal"))
+    basis = locus.groebner(cyclic, algorithm="modular")
+    assert basis.stats["ideal_equality"] == "not applicable"
+    assert "infinity" in basis.stats["ideal_equality_argument"]
+
+
 def test_prime_characteristic(source_dir):
     ideal = locus.read_ideal(str(source_dir / "bench/data/katsura5.ideal"))
     basis = locus.groebner(ideal, characteristic=65521, check=True)

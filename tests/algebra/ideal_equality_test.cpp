@@ -1,0 +1,193 @@
+// prove_ideal_equality: that a certified basis generates no more than the input's ideal. The
+// oracle is Buchberger's algorithm over Q (exact, so its basis generates the input's ideal by
+// construction, and shares no code with the F4 modulo q the proof runs): a basis equal to
+// Buchberger's must be proven or left unproven, never refuted, and one that Buchberger shows
+// to generate a larger ideal must be refuted or left unproven, never proven.
+#include "algebra/modular/ideal_equality.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "algebra/groebner/buchberger.h"
+#include "algebra/groebner/verify.h"
+#include "algebra/modular/modular_groebner.h"
+#include "algebra/parse.h"
+#include "algebra/print.h"
+#include "tests/support/ideal_cases.h"
+
+namespace locus::algebra {
+namespace {
+
+using Status = IdealEquality::Status;
+
+std::vector<Polynomial> exact_basis(const std::vector<Polynomial>& generators) {
+    return buchberger(generators).basis;
+}
+
+// A basis the caller claims to be a Gröbner basis containing the generators: the proof's
+// preconditions, checked here by the rational division algorithm.
+IdealEquality prove(const std::vector<Polynomial>& basis,
+                    const std::vector<Polynomial>& generators) {
+    EXPECT_TRUE(check_groebner_basis(basis, generators).ok);
+    return prove_ideal_equality(basis, generators);
+}
+
+std::vector<Polynomial> polynomials(const IdealFile& file, const std::vector<std::string>& texts) {
+    std::vector<Polynomial> out;
+    for (const std::string& t : texts) {
+        out.push_back(parse_polynomial(t, file.ring));
+    }
+    return out;
+}
+
+TEST(IdealEquality, KatsuraHasNoZerosAtInfinityAndIsProven) {
+    for (const char* name : {"katsura4", "katsura5", "katsura4_lex"}) {
+        const IdealFile f = parse_ideal_file(
+            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
+        const IdealEquality e = prove(exact_basis(f.generators), f.generators);
+        EXPECT_EQ(e.status, Status::proven) << name << ": " << e.argument;
+        EXPECT_NE(e.argument.find("top-degree forms"), std::string::npos) << e.argument;
+        EXPECT_GT(e.prime, 0u);
+    }
+}
+
+TEST(IdealEquality, ZerosAtInfinityLeaveTheEqualityUnproven) {
+    // cyclic-5 has 70 solutions of Bézout's 120; the other 50 are at infinity.
+    const IdealFile f =
+        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic5.ideal"));
+    const IdealEquality e = prove(exact_basis(f.generators), f.generators);
+    EXPECT_EQ(e.status, Status::not_applicable) << e.argument;
+    EXPECT_NE(e.argument.find("zeros at infinity"), std::string::npos) << e.argument;
+    // A positive-dimensional affine ideal: no case applies.
+    const IdealFile curve = parse_ideal_file("vars: x,y,z\ny-x^2\nz-x^3\n");
+    EXPECT_EQ(prove(exact_basis(curve.generators), curve.generators).status,
+              Status::not_applicable);
+}
+
+TEST(IdealEquality, HomogeneousIdealsCompareHilbertSeries) {
+    // Positive-dimensional and homogeneous: the twisted cubic's 2×2 minors, and three
+    // quadrics in four variables.
+    const IdealFile cubic = parse_ideal_file("vars: x,y,z,w\nx*z-y^2\ny*w-z^2\nx*w-y*z\n");
+    IdealEquality e = prove(exact_basis(cubic.generators), cubic.generators);
+    EXPECT_EQ(e.status, Status::proven) << e.argument;
+    EXPECT_NE(e.argument.find("Hilbert series"), std::string::npos) << e.argument;
+    const IdealFile quadrics = parse_ideal_file(
+        "vars: a,b,c,d\norder: lex\na^2-3*b*c+d^2\n2*a*b-c^2+5*b*d\n7*a*d-b^2+c*d\n");
+    e = prove(exact_basis(quadrics.generators), quadrics.generators);
+    EXPECT_EQ(e.status, Status::proven) << e.argument;
+    // A larger homogeneous ideal: its Hilbert series is smaller, which does not refute (q could
+    // be unlucky), but must not prove.
+    const IdealFile line = parse_ideal_file("vars: x,y\nx^2-y^2\n");
+    e = prove(polynomials(line, {"x-y"}), line.generators);
+    EXPECT_EQ(e.status, Status::not_proven) << e.argument;
+}
+
+TEST(IdealEquality, WrongBasesAreRefuted) {
+    // Four solutions and no zeros at infinity: a basis with one solution is wrong.
+    const IdealFile square = parse_ideal_file("vars: x,y\nx^2-1\ny^2-1\n");
+    EXPECT_EQ(prove(exact_basis(square.generators), square.generators).status, Status::proven);
+    IdealEquality e = prove(polynomials(square, {"x-1", "y-1"}), square.generators);
+    EXPECT_EQ(e.status, Status::refuted) << e.argument;
+    EXPECT_EQ(prove(polynomials(square, {"1"}), square.generators).status, Status::refuted);
+    // One generator in two variables cannot make a zero-dimensional ideal (Krull).
+    const IdealFile circle = parse_ideal_file("vars: x,y\nx^2+y^2-1\n");
+    e = prove(polynomials(circle, {"x", "y-1"}), circle.generators);
+    EXPECT_EQ(e.status, Status::refuted) << e.argument;
+    EXPECT_NE(e.argument.find("Krull"), std::string::npos) << e.argument;
+    // The zero ideal and a non-zero one.
+    const std::vector<Polynomial> none;
+    EXPECT_EQ(prove_ideal_equality(polynomials(circle, {"x"}), none).status, Status::refuted);
+    EXPECT_EQ(prove_ideal_equality(none, none).status, Status::proven);
+}
+
+TEST(IdealEquality, TheUnitIdealIsProvenByTheHomogenizedInput) {
+    // Three lines through no common point, not even at infinity.
+    const IdealFile lines = parse_ideal_file("vars: x,y\nx\ny\nx+y+1\n");
+    IdealEquality e = prove(exact_basis(lines.generators), lines.generators);
+    EXPECT_EQ(e.status, Status::proven) << e.argument;
+    EXPECT_NE(e.argument.find("unit ideal"), std::string::npos) << e.argument;
+    // Two parallel lines meet at infinity: the unit ideal there is not proven.
+    const IdealFile parallel = parse_ideal_file("vars: x,y\nx+y-1\nx+y-2\n");
+    e = prove(exact_basis(parallel.generators), parallel.generators);
+    EXPECT_EQ(e.status, Status::not_proven) << e.argument;
+    // Three generators in one variable, with a common zero at infinity only through x^2.
+    const IdealFile overdetermined = parse_ideal_file("vars: x\nx^2-1\nx^2-4\nx^3+x\n");
+    e = prove(exact_basis(overdetermined.generators), overdetermined.generators);
+    EXPECT_EQ(e.status, Status::proven) << e.argument;
+}
+
+// Random square systems of dense quadrics and cubics (generic: no zeros at infinity) in two and
+// three variables: the exact basis is proven; the basis of the ideal with one random polynomial
+// more, which Buchberger shows to be larger, is refuted.
+TEST(IdealEquality, RandomSquareSystemsAgainstBuchberger) {
+    std::mt19937 random(20261129);
+    std::uniform_int_distribution<int> coefficient(-9, 9);
+    int proven = 0, refuted = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        const bool three = trial % 2 == 1;
+        const std::string vars = three ? "x,y,z" : "x,y";
+        const std::vector<std::string> monomials =
+            three ? std::vector<std::string>{"x^2", "y^2", "z^2", "x*y", "y*z", "x", "z", "1"}
+                  : std::vector<std::string>{"x^3", "x*y^2", "y^3", "x^2", "y", "1"};
+        std::string text = "vars: " + vars + "\n";
+        const int count = three ? 3 : 2;
+        auto random_polynomial = [&] {
+            std::string p;
+            for (const std::string& m : monomials) {
+                p += "+(" + std::to_string(coefficient(random)) + ")*" + m;
+            }
+            return p;
+        };
+        for (int k = 0; k < count; ++k) {
+            text += random_polynomial() + "\n";
+        }
+        const IdealFile f = parse_ideal_file(text);
+        const std::vector<Polynomial> basis = exact_basis(f.generators);
+        const IdealEquality right = prove(basis, f.generators);
+        EXPECT_NE(right.status, Status::refuted) << text << right.argument;
+        proven += right.status == Status::proven;
+        // I + ⟨h⟩ for a random linear h: larger unless h vanishes on every solution.
+        std::vector<Polynomial> more = f.generators;
+        more.push_back(parse_polynomial(std::to_string(coefficient(random)) + "*x+" +
+                                            std::to_string(coefficient(random)) + "*y+1",
+                                        f.ring));
+        const std::vector<Polynomial> larger = exact_basis(more);
+        if (check_groebner_basis(basis, more).ok) {
+            continue;  // h is in I: not larger
+        }
+        const IdealEquality wrong = prove(larger, f.generators);
+        EXPECT_NE(wrong.status, Status::proven) << text << wrong.argument;
+        refuted += wrong.status == Status::refuted;
+    }
+    // Generic systems: every case decided (a degenerate draw would show here, not pass).
+    EXPECT_EQ(proven, 12);
+    EXPECT_GE(refuted, 10);
+}
+
+// The modular route runs the proof after the certification, and a refutation sends it on to
+// more primes. Both forced primes divide P = 2147483647 · 2147483629, so modulo each the input
+// is x^2 − 1, x^2 − 2: the unit ideal, on which they agree, and {1} passes the certification
+// (it is a Gröbner basis containing the input). Over Q the ideal has four solutions.
+TEST(IdealEquality, TheModularRouteRetriesARefutedLift) {
+    const IdealFile f = parse_ideal_file(
+        "vars: x,y\norder: grevlex\nx^2+4611685975477714963*y-1\n"
+        "x^2+4611685975477714963*y^2-2\n");
+    ModularOptions forced;
+    forced.primes = {2147483647u, 2147483629u};
+    ModularStats stats;
+    const GroebnerResult r = modular_groebner(f.generators, forced, &stats);
+    EXPECT_EQ(format_polynomials(r.basis, *f.ring, OutputFormat::normalized),
+              format_polynomials(exact_basis(f.generators), *f.ring, OutputFormat::normalized));
+    EXPECT_TRUE(stats.certified);
+    ASSERT_TRUE(stats.equality.has_value());
+    EXPECT_EQ(stats.equality->status, Status::proven) << stats.equality->argument;
+    EXPECT_GT(stats.primes_used.size(), 2u);
+    // Without the proof the wrong lift was the answer: the certificate alone accepts {1}.
+    EXPECT_TRUE(check_groebner_basis(polynomials(f, {"1"}), f.generators).ok);
+}
+
+}  // namespace
+}  // namespace locus::algebra
