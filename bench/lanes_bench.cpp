@@ -150,6 +150,9 @@ void add_lanes_bench(CLI::App& app, cli::CommandContext& context) {
         "The certification's row kernel on synthetic rows: eight reductions together against "
         "one call a reduction, in the same run",
         args, run_lanes_bench);
+    // Synthetic rows: no suite files to read or cases to choose.
+    cmd->remove_option(cmd->get_option("--data"));
+    cmd->remove_option(cmd->get_option("--cases"));
     cmd->add_option("--lanes", args->lane_counts, "lane counts, multiples of 8 (24 32 48)");
     cmd->add_option("--columns", args->column_counts,
                     "columns of the table (4546 11495: katsura-10's and -11's)");
