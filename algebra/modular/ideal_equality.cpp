@@ -7,6 +7,7 @@
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
 
+#include "algebra/error.h"
 #include "algebra/hilbert_series.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/modular/rational_lift.h"
@@ -131,10 +132,12 @@ const char* ideal_equality_status_name(IdealEquality::Status status) {
     return "?";
 }
 
-IdealEquality prove_ideal_equality(std::span<const Polynomial> basis,
-                                   std::span<const Polynomial> generators,
-                                   std::optional<Clock::time_point> deadline, int threads,
-                                   std::span<const std::uint32_t> primes) {
+namespace {
+
+IdealEquality prove_or_overflow(std::span<const Polynomial> basis,
+                                std::span<const Polynomial> generators,
+                                std::optional<Clock::time_point> deadline, int threads,
+                                std::span<const std::uint32_t> primes) {
     const auto start = Clock::now();
     IdealEquality out;
     const auto finish = [&](IdealEquality::Status status, std::string argument) {
@@ -267,6 +270,24 @@ IdealEquality prove_ideal_equality(std::span<const Polynomial> basis,
     return finish(IdealEquality::Status::not_proven,
                   "the basis is {1} but the homogenized input has zeros modulo " +
                       std::to_string(closure_prime));
+}
+
+}  // namespace
+
+IdealEquality prove_ideal_equality(std::span<const Polynomial> basis,
+                                   std::span<const Polynomial> generators,
+                                   std::optional<Clock::time_point> deadline, int threads,
+                                   std::span<const std::uint32_t> primes) {
+    try {
+        return prove_or_overflow(basis, generators, deadline, threads, primes);
+    } catch (const ExponentOverflow& overflow) {
+        // The proof's rings (grevlex, one variable more for the homogenization) pack exponents
+        // in other widths than the input's: an input the route could compute may not fit them.
+        IdealEquality out;
+        out.status = IdealEquality::Status::not_proven;
+        out.argument = std::string("the proof's exponents do not fit (") + overflow.what() + ")";
+        return out;
+    }
 }
 
 }  // namespace locus::algebra

@@ -119,6 +119,15 @@ TEST(IdealEquality, TheUnitIdealIsProvenByTheHomogenizedInput) {
     EXPECT_EQ(e.status, Status::proven) << e.argument;
 }
 
+// The proof works in grevlex rings, whose total-degree field holds at most 32 767: an input
+// the route computes under lex may not fit them, and the proof then reports it, not throws.
+TEST(IdealEquality, ExponentsBeyondTheProofsRingsAreReportedNotThrown) {
+    const IdealFile f = parse_ideal_file("vars: x,y\norder: lex\nx^20000*y^20000-1\nx-2\n");
+    const IdealEquality e = prove(exact_basis(f.generators), f.generators);
+    EXPECT_EQ(e.status, Status::not_proven) << e.argument;
+    EXPECT_NE(e.argument.find("do not fit"), std::string::npos) << e.argument;
+}
+
 // Random square systems of dense quadrics and cubics (generic: no zeros at infinity) in two and
 // three variables: the exact basis is proven; the basis of the ideal with one random polynomial
 // more, which Buchberger shows to be larger, is refuted.

@@ -4,7 +4,8 @@
 //  - for tiny ideals (≤ 3 variables, ≤ 4 generators of degree ≤ 4), the reduced Gröbner bases
 //    of Buchberger's algorithm, the signature algorithm (on one and two threads, with the same
 //    decisions) and the certified multi-modular F4 agree (each is unique, so any difference is
-//    a bug in one of them); for a tiny ideal with a `characteristic:` line, the basis F4
+//    a bug in one of them), and the proof of ideal equality (modular/ideal_equality.h) never
+//    refutes Buchberger's basis; for a tiny ideal with a `characteristic:` line, the basis F4
 //    computes modulo p passes the independent check modulo p (groebner/verify.h), which shares
 //    no code with F4.
 #include <chrono>
@@ -106,6 +107,19 @@ void compare_algorithms(const locus::algebra::IdealFile& file, std::string_view 
     // A stopped run (deadline, more primes than max_primes) is an outcome, not an answer.
     if (modular.outcome == GroebnerOutcome::complete && text_of(modular.basis) != expected) {
         locus::fuzz::property_failed("Buchberger and modular F4 disagree", input);
+    }
+    // Buchberger's basis generates the input's ideal by construction: the proof of ideal
+    // equality may leave it unproven, never refute it (a false refutation would send the
+    // modular route on to more primes until max_primes, an outcome the check above lets pass).
+    try {
+        const auto equality =
+            locus::algebra::prove_ideal_equality(by_buchberger.basis, file.generators, deadline);
+        if (equality.status == locus::algebra::IdealEquality::Status::refuted) {
+            std::fprintf(stderr, "%s\n", equality.argument.c_str());
+            locus::fuzz::property_failed("the exact basis is refuted as larger than the input",
+                                         input);
+        }
+    } catch (const locus::Timeout&) {
     }
 }
 
