@@ -363,7 +363,16 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     // Under lex and other non-degree orders a zero-dimensional ideal is computed under grevlex
     // and converted by FGLM; `via_grevlex` is dropped as soon as the ideal turns out not to be
     // zero-dimensional.
-    bool via_grevlex = !ring->order().is_degree_order();
+    // Only where grevlex's total-degree field holds the work: Macaulay's bound Σ(dᵢ − 1) + 1
+    // on the degrees of a zero-dimensional grevlex basis below its 32 767 (an input of total
+    // degree 40 000 under lex, which lex packs variable by variable, overflowed there and was
+    // refused as bad input).
+    long macaulay_bound = 1;
+    for (const Polynomial& f : inputs) {
+        macaulay_bound += std::max(0L, f.total_degree() - 1);
+    }
+    bool via_grevlex = !ring->order().is_degree_order() &&
+                       macaulay_bound <= static_cast<long>(MonomialLayout::max_field_value);
     const RingPtr grevlex_ring = ring->with_order(MonomialOrder::grevlex(ring->num_vars()));
     std::vector<Polynomial> grevlex_inputs;
     if (via_grevlex) {

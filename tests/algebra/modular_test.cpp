@@ -183,6 +183,18 @@ TEST(Modular, ReviewRegressions) {
     EXPECT_EQ(stopped.basis, lex.generators);
 }
 
+// A zero-dimensional lex input of total degree 40 000 (lex packs it variable by variable): the
+// detour through grevlex, whose total-degree field holds 32 767, overflowed and the route
+// refused the input as bad; F4 now runs under lex itself, to Buchberger's basis.
+TEST(Modular, LexInputsPastGrevlexDegreesAreComputedUnderLex) {
+    const IdealFile f = parse_ideal_file("vars: x,y\norder: lex\nx^20000*y^20000-1\nx-2\n");
+    ModularStats stats;
+    const GroebnerResult r = modular_groebner(f.generators, {}, &stats);
+    EXPECT_EQ(r.outcome, GroebnerOutcome::complete);
+    EXPECT_FALSE(stats.fglm);
+    EXPECT_EQ(normalized(r.basis, *f.ring), normalized(buchberger(f.generators).basis, *f.ring));
+}
+
 // A lift can agree with a fresh prime and still be wrong: both forced primes divide the
 // constant 2147483647 * 2147483629, so modulo each the ideal is (x, y^2), and the lift of the
 // first agrees with the second. Certification must reject it, and the run go on with more
