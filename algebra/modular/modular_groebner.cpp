@@ -363,10 +363,11 @@ GroebnerResult modular_groebner_or_throw(std::span<const Polynomial> generators,
     // Under lex and other non-degree orders a zero-dimensional ideal is computed under grevlex
     // and converted by FGLM; `via_grevlex` is dropped as soon as the ideal turns out not to be
     // zero-dimensional.
-    // Only where grevlex's total-degree field holds the work: Macaulay's bound Σ(dᵢ − 1) + 1
-    // on the degrees of a zero-dimensional grevlex basis below its 32 767 (an input of total
-    // degree 40 000 under lex, which lex packs variable by variable, overflowed there and was
-    // refused as bad input).
+    // Only where grevlex's total-degree field (32 767) can be expected to hold the work:
+    // Macaulay's bound Σ(dᵢ − 1) + 1, which the grevlex basis of a system without zeros at
+    // infinity does not pass, below it. An input of total degree 40 000 under lex, which lex
+    // packs variable by variable, overflowed there and was refused as bad input. (A basis that
+    // passes the bound all the same still overflows, as under grevlex itself.)
     long macaulay_bound = 1;
     for (const Polynomial& f : inputs) {
         macaulay_bound += std::max(0L, f.total_degree() - 1);
