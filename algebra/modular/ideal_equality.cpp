@@ -61,13 +61,20 @@ std::string fresh_name(const PolyRing& ring) {
     return name;
 }
 
-// f^h = h^deg f · f(x/h) in `target`, whose last variable is h.
-Polynomial homogenized(const Polynomial& f, const RingPtr& target) {
+// f^h = h^deg f · f(x/h) in `target`, whose variables are f's variables `kept` (f has no
+// other) in that order, then h.
+Polynomial homogenized(const Polynomial& f, std::span<const std::size_t> kept,
+                       const RingPtr& target) {
     const long degree = f.total_degree();
     std::vector<std::pair<Rational, std::vector<std::uint32_t>>> terms;
     terms.reserve(f.num_terms());
     for (std::size_t i = 0; i < f.num_terms(); ++i) {
-        std::vector<std::uint32_t> e = f.exponents(i);
+        const std::vector<std::uint32_t> all = f.exponents(i);
+        std::vector<std::uint32_t> e;
+        e.reserve(kept.size() + 1);
+        for (std::size_t v : kept) {
+            e.push_back(all[v]);
+        }
         e.push_back(static_cast<std::uint32_t>(degree - term_degree(f, i)));
         terms.emplace_back(f.coefficient(i), std::move(e));
     }
@@ -246,13 +253,24 @@ IdealEquality prove_or_overflow(std::span<const Polynomial> basis,
                       "the input has zeros at infinity (its top-degree forms modulo " +
                           std::to_string(q) + " leave infinitely many standard monomials)");
     }
-    // Case 3, G = {1}: the homogenized input modulo q must have no zeros at all.
-    std::vector<std::string> names = ring->variable_names();
+    // Case 3, G = {1}: the homogenized input modulo q must have no zeros at all. Only in the
+    // variables that occur: the others would be zeros of any homogenization, and the input
+    // generates the unit ideal exactly when it does so in its own variables.
+    std::vector<std::size_t> kept;
+    std::vector<std::string> names;
+    for (std::size_t v = 0; v < n; ++v) {
+        if (std::any_of(inputs.begin(), inputs.end(),
+                        [&](const Polynomial& f) { return f.contains_variable(v); })) {
+            kept.push_back(v);
+            names.push_back(ring->variable_name(v));
+        }
+    }
     names.push_back(fresh_name(*ring));
-    const RingPtr with_h = PolyRing::make(std::move(names), MonomialOrder::grevlex(n + 1));
+    const std::size_t closure_vars = names.size();
+    const RingPtr with_h = PolyRing::make(std::move(names), MonomialOrder::grevlex(closure_vars));
     std::vector<Polynomial> homogeneous_inputs;
     for (const Polynomial& f : inputs) {
-        homogeneous_inputs.push_back(homogenized(f, with_h));
+        homogeneous_inputs.push_back(homogenized(f, kept, with_h));
     }
     auto [closure_basis, closure_prime] =
         basis_modulo_fresh_prime(homogeneous_inputs, deadline, threads, primes);
@@ -261,7 +279,8 @@ IdealEquality prove_or_overflow(std::span<const Polynomial> basis,
         return finish(IdealEquality::Status::not_proven,
                       "every prime tried divides a denominator of the input");
     }
-    const HilbertData closure = hilbert_data(leading_exponents(closure_basis), n + 1, deadline);
+    const HilbertData closure =
+        hilbert_data(leading_exponents(closure_basis), closure_vars, deadline);
     if (closure.unit || closure.dimension == 0) {
         return finish(IdealEquality::Status::proven,
                       "the unit ideal: the homogenized input has no zeros modulo " +

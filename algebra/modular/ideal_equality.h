@@ -29,7 +29,8 @@
 //      (Macaulay), and dim Q[x]/I is then exactly Bézout's bound; a G with another N is wrong.
 //      So is a zero-dimensional G for fewer generators than variables (Krull's height theorem).
 //   3. G = {1}, when the top forms do not decide: the homogenization J = ⟨f^h⟩ in Q[x, h]
-//      lies in I^h, and I = Q[x] when J modulo q has no projective zeros (its quotient is
+//      (x the variables that occur) lies in I^h, and I = Q[x] when J modulo q has no
+//      projective zeros (its quotient is
 //      finite-dimensional, so J's is, so I^h contains a power of every variable and of h).
 // What it rests on besides the certificate: that F4 modulo q (modular/f4.h) computes the
 // reduced basis of the ideal of its input, its rows being combinations of the input's

@@ -109,6 +109,11 @@ TEST(IdealEquality, TheUnitIdealIsProvenByTheHomogenizedInput) {
     IdealEquality e = prove(exact_basis(lines.generators), lines.generators);
     EXPECT_EQ(e.status, Status::proven) << e.argument;
     EXPECT_NE(e.argument.find("unit ideal"), std::string::npos) << e.argument;
+    // Variables the input does not use are no zeros of it (26 of the 28 here).
+    const IdealFile unused = parse_ideal_file(
+        "vars: a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,q,r,s,t,u,v,w,x,y,z,h0,h1\na-1\nb-2\na-b\n");
+    e = prove(exact_basis(unused.generators), unused.generators);
+    EXPECT_EQ(e.status, Status::proven) << e.argument;
     // Two parallel lines meet at infinity: the unit ideal there is not proven.
     const IdealFile parallel = parse_ideal_file("vars: x,y\nx+y-1\nx+y-2\n");
     e = prove(exact_basis(parallel.generators), parallel.generators);
