@@ -212,6 +212,16 @@ IdealEquality prove_or_overflow(std::span<const Polynomial> basis,
                           std::to_string(inputs.size()) + " generators in " + std::to_string(n) +
                           " variables cannot make one (Krull's height theorem)");
     }
+    for (std::size_t v = 0; !unit && v < n; ++v) {
+        // An ideal whose generators do not use v is not the unit ideal (⟨G⟩ is not) and
+        // contains no polynomial in v alone: the basis's, which has a power of v, is larger.
+        if (std::none_of(inputs.begin(), inputs.end(),
+                         [&](const Polynomial& f) { return f.contains_variable(v); })) {
+            return finish(IdealEquality::Status::refuted,
+                          "the basis's ideal is zero-dimensional, and no generator uses " +
+                              ring->variable_name(v));
+        }
+    }
     // Case 2: the top-degree forms modulo q.
     const RingPtr graded = ring->with_order(MonomialOrder::grevlex(n));
     std::vector<Polynomial> top_forms;

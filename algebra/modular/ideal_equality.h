@@ -27,7 +27,8 @@
 //      It also refutes: finitely many standard monomials of the top forms modulo q make them
 //      finitely many over Q, so for a square system a regular sequence, which generates I^top
 //      (Macaulay), and dim Q[x]/I is then exactly Bézout's bound; a G with another N is wrong.
-//      So is a zero-dimensional G for fewer generators than variables (Krull's height theorem).
+//      So is a zero-dimensional G for fewer generators than variables (Krull's height theorem)
+//      or for generators that leave a variable unused.
 //   3. G = {1}, when the top forms do not decide: the homogenization J = ⟨f^h⟩ in Q[x, h]
 //      (x the variables that occur) lies in I^h, and I = Q[x] when J modulo q has no
 //      projective zeros (its quotient is

@@ -97,6 +97,11 @@ TEST(IdealEquality, WrongBasesAreRefuted) {
     e = prove(polynomials(circle, {"x", "y-1"}), circle.generators);
     EXPECT_EQ(e.status, Status::refuted) << e.argument;
     EXPECT_NE(e.argument.find("Krull"), std::string::npos) << e.argument;
+    // A variable no generator uses cannot have a power in the ideal.
+    const IdealFile free_z = parse_ideal_file("vars: x,y,z\nx^2-1\ny-x\nx*y-1\n");
+    e = prove(polynomials(free_z, {"x-1", "y-1", "z"}), free_z.generators);
+    EXPECT_EQ(e.status, Status::refuted) << e.argument;
+    EXPECT_NE(e.argument.find("no generator uses z"), std::string::npos) << e.argument;
     // The zero ideal and a non-zero one.
     const std::vector<Polynomial> none;
     EXPECT_EQ(prove_ideal_equality(polynomials(circle, {"x"}), none).status, Status::refuted);
