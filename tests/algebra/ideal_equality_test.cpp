@@ -43,66 +43,60 @@ std::vector<Polynomial> polynomials(const IdealFile& file, const std::vector<std
     return out;
 }
 
+// The proof's verdict on `basis` (Buchberger's basis of the file when empty) for the ideal of
+// the file `text`: `status`, with an argument that names `phrase`.
+void expect_verdict(const std::string& text, const std::vector<std::string>& basis, Status status,
+                    const std::string& phrase = "") {
+    const IdealFile f = parse_ideal_file(text);
+    const IdealEquality e =
+        prove(basis.empty() ? exact_basis(f.generators) : polynomials(f, basis), f.generators);
+    EXPECT_EQ(e.status, status) << text << e.argument;
+    EXPECT_NE(e.argument.find(phrase), std::string::npos) << text << e.argument;
+}
+
+std::string bench_file(const std::string& name) {
+    return test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal");
+}
+
 TEST(IdealEquality, KatsuraHasNoZerosAtInfinityAndIsProven) {
     for (const char* name : {"katsura4", "katsura5", "katsura4_lex"}) {
-        const IdealFile f = parse_ideal_file(
-            test::read_text(test::source_dir() + "/bench/data/" + name + ".ideal"));
-        const IdealEquality e = prove(exact_basis(f.generators), f.generators);
-        EXPECT_EQ(e.status, Status::proven) << name << ": " << e.argument;
-        EXPECT_NE(e.argument.find("top-degree forms"), std::string::npos) << e.argument;
-        EXPECT_GT(e.prime, 0u);
+        expect_verdict(bench_file(name), {}, Status::proven, "top-degree forms");
     }
 }
 
 TEST(IdealEquality, ZerosAtInfinityLeaveTheEqualityUnproven) {
     // cyclic-5 has 70 solutions of Bézout's 120; the other 50 are at infinity.
-    const IdealFile f =
-        parse_ideal_file(test::read_text(test::source_dir() + "/bench/data/cyclic5.ideal"));
-    const IdealEquality e = prove(exact_basis(f.generators), f.generators);
-    EXPECT_EQ(e.status, Status::not_applicable) << e.argument;
-    EXPECT_NE(e.argument.find("zeros at infinity"), std::string::npos) << e.argument;
+    expect_verdict(bench_file("cyclic5"), {}, Status::not_applicable, "zeros at infinity");
     // A positive-dimensional affine ideal: no case applies.
-    const IdealFile curve = parse_ideal_file("vars: x,y,z\ny-x^2\nz-x^3\n");
-    EXPECT_EQ(prove(exact_basis(curve.generators), curve.generators).status,
-              Status::not_applicable);
+    expect_verdict("vars: x,y,z\ny-x^2\nz-x^3\n", {}, Status::not_applicable,
+                   "infinitely many standard monomials");
 }
 
 TEST(IdealEquality, HomogeneousIdealsCompareHilbertSeries) {
     // Positive-dimensional and homogeneous: the twisted cubic's 2×2 minors, and three
-    // quadrics in four variables.
-    const IdealFile cubic = parse_ideal_file("vars: x,y,z,w\nx*z-y^2\ny*w-z^2\nx*w-y*z\n");
-    IdealEquality e = prove(exact_basis(cubic.generators), cubic.generators);
-    EXPECT_EQ(e.status, Status::proven) << e.argument;
-    EXPECT_NE(e.argument.find("Hilbert series"), std::string::npos) << e.argument;
-    const IdealFile quadrics = parse_ideal_file(
-        "vars: a,b,c,d\norder: lex\na^2-3*b*c+d^2\n2*a*b-c^2+5*b*d\n7*a*d-b^2+c*d\n");
-    e = prove(exact_basis(quadrics.generators), quadrics.generators);
-    EXPECT_EQ(e.status, Status::proven) << e.argument;
+    // quadrics in four variables under lex.
+    expect_verdict("vars: x,y,z,w\nx*z-y^2\ny*w-z^2\nx*w-y*z\n", {}, Status::proven,
+                   "Hilbert series");
+    expect_verdict("vars: a,b,c,d\norder: lex\na^2-3*b*c+d^2\n2*a*b-c^2+5*b*d\n7*a*d-b^2+c*d\n", {},
+                   Status::proven);
     // A larger homogeneous ideal: its Hilbert series is smaller, which does not refute (q could
     // be unlucky), but must not prove.
-    const IdealFile line = parse_ideal_file("vars: x,y\nx^2-y^2\n");
-    e = prove(polynomials(line, {"x-y"}), line.generators);
-    EXPECT_EQ(e.status, Status::not_proven) << e.argument;
+    expect_verdict("vars: x,y\nx^2-y^2\n", {"x-y"}, Status::not_proven);
 }
 
 TEST(IdealEquality, WrongBasesAreRefuted) {
-    // Four solutions and no zeros at infinity: a basis with one solution is wrong.
-    const IdealFile square = parse_ideal_file("vars: x,y\nx^2-1\ny^2-1\n");
-    EXPECT_EQ(prove(exact_basis(square.generators), square.generators).status, Status::proven);
-    IdealEquality e = prove(polynomials(square, {"x-1", "y-1"}), square.generators);
-    EXPECT_EQ(e.status, Status::refuted) << e.argument;
-    EXPECT_EQ(prove(polynomials(square, {"1"}), square.generators).status, Status::refuted);
-    // One generator in two variables cannot make a zero-dimensional ideal (Krull).
-    const IdealFile circle = parse_ideal_file("vars: x,y\nx^2+y^2-1\n");
-    e = prove(polynomials(circle, {"x", "y-1"}), circle.generators);
-    EXPECT_EQ(e.status, Status::refuted) << e.argument;
-    EXPECT_NE(e.argument.find("Krull"), std::string::npos) << e.argument;
+    // Four solutions and no zeros at infinity: a basis with one solution, or none, is wrong.
+    const std::string square = "vars: x,y\nx^2-1\ny^2-1\n";
+    expect_verdict(square, {}, Status::proven);
+    expect_verdict(square, {"x-1", "y-1"}, Status::refuted, "no zeros at infinity");
+    expect_verdict(square, {"1"}, Status::refuted);
+    // One generator in two variables cannot make a zero-dimensional ideal.
+    expect_verdict("vars: x,y\nx^2+y^2-1\n", {"x", "y-1"}, Status::refuted, "Krull");
     // A variable no generator uses cannot have a power in the ideal.
-    const IdealFile free_z = parse_ideal_file("vars: x,y,z\nx^2-1\ny-x\nx*y-1\n");
-    e = prove(polynomials(free_z, {"x-1", "y-1", "z"}), free_z.generators);
-    EXPECT_EQ(e.status, Status::refuted) << e.argument;
-    EXPECT_NE(e.argument.find("no generator uses z"), std::string::npos) << e.argument;
+    expect_verdict("vars: x,y,z\nx^2-1\ny-x\nx*y-1\n", {"x-1", "y-1", "z"}, Status::refuted,
+                   "no generator uses z");
     // The zero ideal and a non-zero one.
+    const IdealFile circle = parse_ideal_file("vars: x,y\nx^2+y^2-1\n");
     const std::vector<Polynomial> none;
     EXPECT_EQ(prove_ideal_equality(polynomials(circle, {"x"}), none).status, Status::refuted);
     EXPECT_EQ(prove_ideal_equality(none, none).status, Status::proven);
@@ -110,32 +104,22 @@ TEST(IdealEquality, WrongBasesAreRefuted) {
 
 TEST(IdealEquality, TheUnitIdealIsProvenByTheHomogenizedInput) {
     // Three lines through no common point, not even at infinity.
-    const IdealFile lines = parse_ideal_file("vars: x,y\nx\ny\nx+y+1\n");
-    IdealEquality e = prove(exact_basis(lines.generators), lines.generators);
-    EXPECT_EQ(e.status, Status::proven) << e.argument;
-    EXPECT_NE(e.argument.find("unit ideal"), std::string::npos) << e.argument;
+    expect_verdict("vars: x,y\nx\ny\nx+y+1\n", {}, Status::proven, "unit ideal");
     // Variables the input does not use are no zeros of it (26 of the 28 here).
-    const IdealFile unused = parse_ideal_file(
-        "vars: a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,q,r,s,t,u,v,w,x,y,z,h0,h1\na-1\nb-2\na-b\n");
-    e = prove(exact_basis(unused.generators), unused.generators);
-    EXPECT_EQ(e.status, Status::proven) << e.argument;
+    expect_verdict(
+        "vars: a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,q,r,s,t,u,v,w,x,y,z,h0,h1\na-1\nb-2\na-b\n", {},
+        Status::proven, "unit ideal");
     // Two parallel lines meet at infinity: the unit ideal there is not proven.
-    const IdealFile parallel = parse_ideal_file("vars: x,y\nx+y-1\nx+y-2\n");
-    e = prove(exact_basis(parallel.generators), parallel.generators);
-    EXPECT_EQ(e.status, Status::not_proven) << e.argument;
+    expect_verdict("vars: x,y\nx+y-1\nx+y-2\n", {}, Status::not_proven, "has zeros");
     // Three generators in one variable, with a common zero at infinity only through x^2.
-    const IdealFile overdetermined = parse_ideal_file("vars: x\nx^2-1\nx^2-4\nx^3+x\n");
-    e = prove(exact_basis(overdetermined.generators), overdetermined.generators);
-    EXPECT_EQ(e.status, Status::proven) << e.argument;
+    expect_verdict("vars: x\nx^2-1\nx^2-4\nx^3+x\n", {}, Status::proven);
 }
 
 // The proof works in grevlex rings, whose total-degree field holds at most 32 767: an input
 // the route computes under lex may not fit them, and the proof then reports it, not throws.
 TEST(IdealEquality, ExponentsBeyondTheProofsRingsAreReportedNotThrown) {
-    const IdealFile f = parse_ideal_file("vars: x,y\norder: lex\nx^20000*y^20000-1\nx-2\n");
-    const IdealEquality e = prove(exact_basis(f.generators), f.generators);
-    EXPECT_EQ(e.status, Status::not_proven) << e.argument;
-    EXPECT_NE(e.argument.find("do not fit"), std::string::npos) << e.argument;
+    expect_verdict("vars: x,y\norder: lex\nx^20000*y^20000-1\nx-2\n", {}, Status::not_proven,
+                   "do not fit");
 }
 
 // Random square systems of dense quadrics and cubics (generic: no zeros at infinity) in two and
