@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "algebra/error.h"
 #include "algebra/groebner/buchberger.h"
 #include "algebra/groebner/verify.h"
 #include "algebra/modular/modular_groebner.h"
@@ -120,6 +122,15 @@ TEST(IdealEquality, TheUnitIdealIsProvenByTheHomogenizedInput) {
 TEST(IdealEquality, ExponentsBeyondTheProofsRingsAreReportedNotThrown) {
     expect_verdict("vars: x,y\norder: lex\nx^20000*y^20000-1\nx-2\n", {}, Status::not_proven,
                    "do not fit");
+}
+
+// Every phase honours the deadline: the proof's F4 and Hilbert series throw Timeout.
+TEST(IdealEquality, HonoursTheDeadline) {
+    const IdealFile f = parse_ideal_file(bench_file("katsura5"));
+    const std::vector<Polynomial> basis = exact_basis(f.generators);
+    EXPECT_THROW(prove_ideal_equality(basis, f.generators,
+                                      std::chrono::steady_clock::now() - std::chrono::seconds(1)),
+                 Timeout);
 }
 
 // Random square systems of dense quadrics and cubics (generic: no zeros at infinity) in two and
