@@ -107,9 +107,20 @@ ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOp
     for (const auto& g : kept) {
         in_coordinates.push_back(g.in_ring(result.ring, down));
     }
-    result.generators = in_coordinates.empty()
-                            ? in_coordinates
-                            : algebra::signature_groebner_or_buchberger(in_coordinates).basis;
+    if (!in_coordinates.empty()) {
+        // The basis in the coordinates' own ring, under the same deadline as the elimination
+        // (it ran without one: a hostile map could hold --timeout up here).
+        algebra::GroebnerOptions graded;
+        graded.deadline = options.deadline;
+        graded.threads = options.threads;
+        algebra::GroebnerResult r =
+            algebra::signature_groebner_or_buchberger(in_coordinates, graded);
+        if (r.outcome == algebra::GroebnerOutcome::stopped_timeout) {
+            throw Timeout("the implicit equations' basis was not complete at the deadline");
+        }
+        in_coordinates = std::move(r.basis);
+    }
+    result.generators = std::move(in_coordinates);
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (result.generators.size() == 1) {
