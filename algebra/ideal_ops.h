@@ -5,8 +5,9 @@
 // selection strategy therefore has no effect here.
 // `options` reach every Gröbner basis an operation computes; none can use a partial basis, so
 // one stopped at options.deadline throws Timeout (and one past options.max_basis_size,
-// Error). The cofactor search of ideal_membership (a plain Buchberger run that tracks
-// cofactors) honours only the deadline, read before each S-pair.
+// Error). The cofactor search of ideal_membership (division by the generators, and where that
+// leaves a remainder a plain Buchberger run that tracks cofactors) honours only the deadline,
+// read before each S-pair.
 //
 // Auxiliary variables (intersection, saturation, radical membership) are added in a larger ring
 // with a fresh name and eliminated; they never appear in a result.

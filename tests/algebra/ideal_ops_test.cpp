@@ -50,6 +50,31 @@ TEST(IdealOps, MembershipWithCertificate) {
     EXPECT_FALSE(no.remainder.is_zero());
 }
 
+// Cofactors come from division by the generators when it reaches zero, else from the tracked
+// Buchberger run; both are checked here as the product sum they claim to be.
+TEST(IdealOps, MembershipCofactorsByDivisionOrByTrackedBuchberger) {
+    const auto check = [](const Polynomial& f, const std::vector<Polynomial>& gens) {
+        const MembershipCertificate c = ideal_membership(f, gens);
+        ASSERT_TRUE(c.is_member);
+        Polynomial sum(f.ring());
+        for (std::size_t i = 0; i < gens.size(); ++i) {
+            sum += c.cofactors[i] * gens[i];
+        }
+        EXPECT_EQ(sum, f);
+    };
+    // x − y is in ⟨xy − 1, y² − 1⟩ (x = x·y² = y·xy = y), but division by the generators
+    // stops at x: the tracked run finds the cofactors.
+    const RingPtr lex = PolyRing::make({"x", "y"}, MonomialOrder::lex(2));
+    const auto pair = polys(lex, {"x*y-1", "y^2-1"});
+    EXPECT_FALSE(divide(parse_polynomial("x-y", lex), pair).remainder.is_zero());
+    check(parse_polynomial("x-y", lex), pair);
+    // A generator of an ideal whose tracked run multiplied cofactors past the exponent range
+    // (exit 2, "exponent overflow", from `locus ideal member`): division answers at once.
+    const auto wide = polys(lex, {"x^20000*y^20000-1", "x-2"});
+    check(parse_polynomial("x-2", lex), wide);
+    check(parse_polynomial("3*x-6", lex), wide);
+}
+
 TEST(IdealOps, EliminationImplicitizesTheTwistedCubic) {
     const RingPtr r = PolyRing::make({"t", "x", "y", "z"}, MonomialOrder::grevlex(4));
     const auto gens = polys(r, {"x-t", "y-t^2", "z-t^3"});
