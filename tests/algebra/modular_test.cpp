@@ -159,6 +159,16 @@ TEST(Modular, ReviewRegressions) {
     EXPECT_EQ(normalized(modular_groebner(lead.generators, forced, &stats).basis, *lead.ring),
               "x-1/4611685975477714963\n");
     EXPECT_GE(stats.unlucky_primes, 2u);
+    // The same primes on a positive-dimensional input, where no proof of ideal equality applies
+    // (ideal_equality.h): modulo each the input is −1, and only setting them aside keeps "1",
+    // which the certificate accepts, from being the answer.
+    const IdealFile curve =
+        parse_ideal_file("vars: x,y\norder: grevlex\n4611685975477714963*x*y-1\n");
+    ModularStats curve_stats;
+    EXPECT_EQ(
+        normalized(modular_groebner(curve.generators, forced, &curve_stats).basis, *curve.ring),
+        "x*y-1/4611685975477714963\n");
+    EXPECT_GE(curve_stats.unlucky_primes, 2u);
     // Under an elimination order, F4 one pair at a time by least lcm did not finish; by least
     // first-row sugar it takes milliseconds.
     const IdealFile elim = parse_ideal_file(
