@@ -9,6 +9,7 @@
 
 #include "algebra/error.h"
 #include "algebra/hilbert_series.h"
+#include "algebra/ideal_ops.h"
 #include "algebra/modular/modular_groebner.h"
 #include "algebra/modular/rational_lift.h"
 #include "algebra/standard_monomials.h"
@@ -19,17 +20,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Primes tried for q: a denominator of the input divisible by q makes groebner_modulo refuse
-// it, and the next one is taken. Two denominators among the inputs cannot share every prime
+// Primes tried for q: one that divides a denominator of the input is passed over
+// (divides_a_denominator) for the next. Two denominators among the inputs cannot share every prime
 // below 2²⁴, so a few suffice.
 constexpr int kPrimeAttempts = 8;
 
 long term_degree(const Polynomial& f, std::size_t i) {
-    long sum = 0;
-    for (std::uint32_t x : f.exponents(i)) {
-        sum += x;
-    }
-    return sum;
+    return f.ring()->layout().total_degree(f.monomial(i));
 }
 
 bool is_homogeneous(const Polynomial& f) {
@@ -49,16 +46,6 @@ std::vector<ExponentVector> leading_exponents(std::span<const Polynomial> basis)
         leading.push_back(g.exponents(0));
     }
     return leading;
-}
-
-// A variable name the ring does not have, for the homogenizing variable.
-std::string fresh_name(const PolyRing& ring) {
-    std::string name = "h";
-    for (int k = 0; ring.variable_index(name).has_value(); ++k) {
-        name.resize(1);  // "h" then the number (not "h" + …: GCC 12's false -Wrestrict)
-        name += std::to_string(k);
-    }
-    return name;
 }
 
 // f^h = h^deg f · f(x/h) in `target`, whose variables are f's variables `kept` (f has no
@@ -275,9 +262,11 @@ IdealEquality prove_or_overflow(std::span<const Polynomial> basis,
             names.push_back(ring->variable_name(v));
         }
     }
-    names.push_back(fresh_name(*ring));
-    const std::size_t closure_vars = names.size();
-    const RingPtr with_h = PolyRing::make(std::move(names), MonomialOrder::grevlex(closure_vars));
+    const std::size_t closure_vars = kept.size() + 1;
+    const RingPtr with_h =
+        ring_with_extra_variable(
+            PolyRing::make(std::move(names), MonomialOrder::grevlex(kept.size())), "h")
+            ->with_order(MonomialOrder::grevlex(closure_vars));
     std::vector<Polynomial> homogeneous_inputs;
     for (const Polynomial& f : inputs) {
         homogeneous_inputs.push_back(homogenized(f, kept, with_h));
