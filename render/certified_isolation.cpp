@@ -170,6 +170,14 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end) 
     return out;
 }
 
+// A search that ends before this point of its piece is cut at its end first: bisection up to
+// the end splits every piece that straddles it and shows a root past it (the surface beyond
+// the clip sphere) or a near one. The cut is rounded up (by 8u: its quotient rounds twice,
+// its use once more), so that the piece holds the whole search, and a root it finds past the
+// end is the caller's to check, as when a piece reaches past it (first_hit_from).
+constexpr double kCutEnd = 0.75;
+constexpr double kRoundUp = 1.0 + 8.0 * 0x1.0p-53;
+
 Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double start, double end,
                                   double guess, double reach) {
     max_depth = std::clamp(max_depth, 0, 52);
@@ -190,17 +198,30 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     // at the window's end, to spare the cut).
     const bool window_to_end = b >= 1.0 - 0x1.0p-30 && end >= 1.0;
     if (g.degree < 1 || !(a > start) || !(window_to_end || b < std::min(end, 1.0)) || !(b > a)) {
-        // No usable guess: cut at `start`, bisect the rest.
-        if (!(start > 0.0)) {
+        // No usable guess: cut at `start` (and at `end`, kCutEnd), bisect what is between.
+        if (!(start > 0.0) && !(end < kCutEnd)) {
             isolate_into(g, max_depth, end, out);
             return out;
         }
         BernsteinBall skipped, rest;
-        split_at(g, start, skipped, rest);
-        ++work;
-        const double scale = 1.0 - start;
-        isolate_into(rest, depth_within(scale), (end - start) / scale, out);
-        map_back(start, scale);
+        const BernsteinBall* searched = &g;
+        double scale = 1.0;
+        if (start > 0.0) {
+            split_at(g, start, skipped, rest);
+            searched = &rest;
+            ++work;
+            scale = 1.0 - start;
+        }
+        const double rest_end = (end - std::max(start, 0.0)) / scale;
+        const bool cut = rest_end > 0.0 && rest_end < kCutEnd;
+        if (cut) {
+            split_at(*searched, rest_end * kRoundUp, rest, skipped);
+            searched = &rest;
+            ++work;
+            scale *= rest_end * kRoundUp;
+        }
+        isolate_into(*searched, depth_within(scale), cut ? 1.0 : rest_end, out);
+        map_back(std::max(start, 0.0), scale);
         return out;
     }
     // [0, a] whole first — the stretch before `start` too: a piece certainly of one sign
@@ -247,8 +268,18 @@ Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double 
     }
     work += out.work;
     const double h = a + window_width;
-    const double beyond_width = 1.0 - h;
-    isolate_into(beyond, depth_within(beyond_width), (end - h) / beyond_width, out);
+    double beyond_width = 1.0 - h;
+    const double beyond_end = (end - h) / beyond_width;
+    // h is itself within a few u of the piece's exact start: the cut goes 4u past `end`.
+    const double end_cut = (end + 4.0 * 0x1.0p-53 - h) / beyond_width * kRoundUp;
+    const bool cut = beyond_end > 0.0 && end_cut < kCutEnd;
+    if (cut) {
+        BernsteinBall skipped;
+        split_at(beyond, end_cut, beyond, skipped);
+        ++work;
+        beyond_width *= end_cut;
+    }
+    isolate_into(beyond, depth_within(beyond_width), cut ? 1.0 : beyond_end, out);
     map_back(h, beyond_width);
     return out;
 }

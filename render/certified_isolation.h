@@ -41,8 +41,10 @@ Isolation isolate_first_root(const BernsteinBall& g, int max_depth, double end =
 // a cut for every level down to the root. A wrong guess costs those cuts, never the answer.
 // A window reaching 1 (within 2^-30, when `end` is 1) is [a, 1]: one cut in all. Without a
 // usable window (not inside (start, min(end, 1)), or NaN) the search is
-// isolate_first_root's on [start, 1]. The ends of a `one_root` or `undecided` piece are in g's
-// σ and not dyadic: each is within 8u of the exact end of its piece.
+// isolate_first_root's on [start, 1]. A search that ends well before 1 (the rest after the
+// window, or the whole without one) is cut just past `end` first. The ends of a `one_root` or
+// `undecided` piece are in g's σ and not dyadic: each is within 8u of the exact end of its
+// piece.
 Isolation isolate_first_root_near(const BernsteinBall& g, int max_depth, double start, double end,
                                   double guess, double reach);
 

@@ -655,5 +655,97 @@ TEST(MeanValueBracket, HoldsTheRootAndPlacesItFromOneValue) {
     EXPECT_GT(tight, trials / 2) << tight << " of " << trials;
 }
 
+// A search that ends before three quarters of its piece is cut at its end first
+// (isolate_first_root_near): the cut must never fall short of the end, or a root just before it
+// would go unseen. The ball holds G(σ) = (σ − c)·Q(σ), Q > 0, exactly (its coefficients over Q,
+// rounded, with radii covering the rounding), so c is the only root; searches end a few
+// roundings before c, at c, or just past it, with no guess, a window before the root (the cut
+// after the window) and one around it.
+TEST(IsolationNear, CutAtTheEndKeepsEveryRootBeforeIt) {
+    std::mt19937_64 random(47);
+    std::uniform_real_distribution<double> fraction(0.0, 1.0);
+    const double u = 0x1.0p-53;
+    int inside = 0;
+    const int count = test::seed_count(300);
+    for (int trial = 0; trial < count; ++trial) {
+        const int n = 2 + trial % 11;
+        const double c = 0.05 + 0.6 * fraction(random);
+        // Power coefficients of (σ − c)·Σ q_k σ^k with q_k > 0, then b_i = Σ_{j ≤ i}
+        // C(i, j)/C(n, j)·a_j, all over Q.
+        std::vector<Rational> q(static_cast<std::size_t>(n)), a(static_cast<std::size_t>(n + 1));
+        for (int k = 0; k < n; ++k) {
+            q[static_cast<std::size_t>(k)] = exact(0.1 + fraction(random));
+        }
+        const Rational root = exact(c);
+        for (int k = 0; k <= n; ++k) {
+            Rational term;
+            if (k > 0) {
+                fmpq_add(term.get(), term.get(), q[static_cast<std::size_t>(k - 1)].get());
+            }
+            if (k < n) {
+                Rational product;
+                fmpq_mul(product.get(), root.get(), q[static_cast<std::size_t>(k)].get());
+                fmpq_sub(term.get(), term.get(), product.get());
+            }
+            a[static_cast<std::size_t>(k)] = term;
+        }
+        BernsteinBall g;
+        g.degree = n;
+        fmpz_t choose_i, choose_n;
+        fmpz_init(choose_i);
+        fmpz_init(choose_n);
+        for (int i = 0; i <= n; ++i) {
+            Rational beta, term;
+            for (int j = 0; j <= i; ++j) {
+                fmpz_bin_uiui(choose_i, static_cast<ulong>(i), static_cast<ulong>(j));
+                fmpz_bin_uiui(choose_n, static_cast<ulong>(n), static_cast<ulong>(j));
+                fmpq_mul_fmpz(term.get(), a[static_cast<std::size_t>(j)].get(), choose_i);
+                fmpq_div_fmpz(term.get(), term.get(), choose_n);
+                fmpq_add(beta.get(), beta.get(), term.get());
+            }
+            g.b[i] = fmpq_get_d(beta.get());
+            g.r[i] = fmpq_get_d(absolute_difference(beta, exact(g.b[i])).get()) *
+                         (1.0 + 0x1.0p-50) +
+                     0x1.0p-1074;
+        }
+        fmpz_clear(choose_i);
+        fmpz_clear(choose_n);
+        for (const double end : {c - 64.0 * u, c - 2.0 * u, c, c + 2.0 * u, c + 1e-9}) {
+            const double start = trial % 2 == 0 ? 0.0 : c * fraction(random);
+            struct Guess {
+                double at, reach;
+            };
+            const Guess guesses[] = {{NAN, 0.0},
+                                     {0.5 * (start + c), 0.25 * (c - start)},
+                                     {c, 0.5 * (c - start)}};
+            for (const Guess& guess : guesses) {
+                const Isolation found =
+                    isolate_first_root_near(g, 40, start, end, guess.at, guess.reach);
+                // A one_root piece holds c; an undecided one says only that no root comes
+                // before it (the radii blur G's sign next to c).
+                const bool holds_c = found.kind == Isolation::Kind::one_root
+                                         ? found.lo <= c + 8.0 * u && found.hi >= c - 8.0 * u
+                                         : found.kind == Isolation::Kind::undecided &&
+                                               found.lo <= c + 8.0 * u;
+                const char* kind = found.kind == Isolation::Kind::no_root     ? "no root"
+                                   : found.kind == Isolation::Kind::one_root ? "one root"
+                                                                             : "undecided";
+                if (c <= end) {
+                    ++inside;
+                    EXPECT_TRUE(holds_c)
+                        << "degree " << n << ": the root " << c << " before the end " << end
+                        << " (start " << start << ", guess " << guess.at << "): " << kind
+                        << " [" << found.lo << ", " << found.hi << "]";
+                } else {
+                    EXPECT_TRUE(found.kind == Isolation::Kind::no_root || holds_c)
+                        << "degree " << n << ": the only root is " << c << ", past the end "
+                        << end << ": " << kind << " [" << found.lo << ", " << found.hi << "]";
+                }
+            }
+        }
+    }
+    EXPECT_GT(inside, count);
+}
+
 }  // namespace
 }  // namespace locus::render
