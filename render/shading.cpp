@@ -132,11 +132,10 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
     const Vec3 outward = side.outside ? side.normal : -side.normal;
     // Only a pattern needs the footprint (two divisions and two square roots a hit).
     const Material material =
-        surface.material.checker
-            ? surface.material.at(
-                  point - (1e-6 * scale_) * outward,
-                  surface_footprint(ray.origin, sample, point, side.normal, 1e6 * scale_))
-            : surface.material;
+        surface.material.checker ? surface.material.at(point - (1e-6 * scale_) * outward,
+                                                       surface_footprint(ray.origin, sample, point,
+                                                                         side.normal, 1e6 * scale_))
+                                 : surface.material;
     ShadingResult result;
     const double ambient_factor =
         options_.ambient_occlusion ? ambient_occlusion(point, side.normal, seed, result.work) : 1.0;

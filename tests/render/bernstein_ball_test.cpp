@@ -704,9 +704,9 @@ TEST(IsolationNear, CutAtTheEndKeepsEveryRootBeforeIt) {
                 fmpq_add(beta.get(), beta.get(), term.get());
             }
             g.b[i] = fmpq_get_d(beta.get());
-            g.r[i] = fmpq_get_d(absolute_difference(beta, exact(g.b[i])).get()) *
-                         (1.0 + 0x1.0p-50) +
-                     0x1.0p-1074;
+            g.r[i] =
+                fmpq_get_d(absolute_difference(beta, exact(g.b[i])).get()) * (1.0 + 0x1.0p-50) +
+                0x1.0p-1074;
         }
         fmpz_clear(choose_i);
         fmpz_clear(choose_n);
@@ -715,31 +715,30 @@ TEST(IsolationNear, CutAtTheEndKeepsEveryRootBeforeIt) {
             struct Guess {
                 double at, reach;
             };
-            const Guess guesses[] = {{NAN, 0.0},
-                                     {0.5 * (start + c), 0.25 * (c - start)},
-                                     {c, 0.5 * (c - start)}};
+            const Guess guesses[] = {
+                {NAN, 0.0}, {0.5 * (start + c), 0.25 * (c - start)}, {c, 0.5 * (c - start)}};
             for (const Guess& guess : guesses) {
                 const Isolation found =
                     isolate_first_root_near(g, 40, start, end, guess.at, guess.reach);
                 // A one_root piece holds c; an undecided one says only that no root comes
                 // before it (the radii blur G's sign next to c).
-                const bool holds_c = found.kind == Isolation::Kind::one_root
-                                         ? found.lo <= c + 8.0 * u && found.hi >= c - 8.0 * u
-                                         : found.kind == Isolation::Kind::undecided &&
-                                               found.lo <= c + 8.0 * u;
-                const char* kind = found.kind == Isolation::Kind::no_root     ? "no root"
+                const bool holds_c =
+                    found.kind == Isolation::Kind::one_root
+                        ? found.lo <= c + 8.0 * u && found.hi >= c - 8.0 * u
+                        : found.kind == Isolation::Kind::undecided && found.lo <= c + 8.0 * u;
+                const char* kind = found.kind == Isolation::Kind::no_root    ? "no root"
                                    : found.kind == Isolation::Kind::one_root ? "one root"
                                                                              : "undecided";
                 if (c <= end) {
                     ++inside;
                     EXPECT_TRUE(holds_c)
                         << "degree " << n << ": the root " << c << " before the end " << end
-                        << " (start " << start << ", guess " << guess.at << "): " << kind
-                        << " [" << found.lo << ", " << found.hi << "]";
+                        << " (start " << start << ", guess " << guess.at << "): " << kind << " ["
+                        << found.lo << ", " << found.hi << "]";
                 } else {
                     EXPECT_TRUE(found.kind == Isolation::Kind::no_root || holds_c)
-                        << "degree " << n << ": the only root is " << c << ", past the end "
-                        << end << ": " << kind << " [" << found.lo << ", " << found.hi << "]";
+                        << "degree " << n << ": the only root is " << c << ", past the end " << end
+                        << ": " << kind << " [" << found.lo << ", " << found.hi << "]";
                 }
             }
         }
