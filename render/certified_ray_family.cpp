@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "algebra/double_double.h"
 #include "render/certified_isolation.h"
 #include "render/detail/chebyshev_interpolation.h"
 #include "render/ray_restriction.h"
@@ -27,13 +28,11 @@ Vec3 direction_rounding(const Camera& camera, double x, double y) {
 
 // The reference ray of image point (x, y) is e + (D + s·R)·d(x, y) with the exact
 // d = base + x·U + y·V; as a line in s ∈ [−1, 1] its origin is e + D·d and its direction R·d.
-// Its restriction in the Bernstein basis, with rigorous radii for the direction's rounding
-// and `node_error` more on each of d's components.
+// Its restriction in the Bernstein basis, with rigorous radii for d given within `d_error`
+// (componentwise) of the exact direction.
 BernsteinBall line_ball(const LineRestrictor& restrictor, const algebra::CompiledPolynomial& f,
-                        const Camera& camera, double plane_t, double radius, double image_x,
-                        double image_y, const Vec3& node_error) {
-    const Vec3 d = camera.direction(image_x, image_y);
-    const Vec3 d_error = direction_rounding(camera, image_x, image_y) + node_error;
+                        const Camera& camera, double plane_t, double radius, const Vec3& d,
+                        const Vec3& d_error) {
     const Vec3& eye = camera.eye();
     Vec3 origin, direction;
     LineError error;
@@ -45,6 +44,48 @@ BernsteinBall line_ball(const LineRestrictor& restrictor, const algebra::Compile
     }
     return to_bernstein(
         restrictor.restrict_with_bounds(origin, direction, error, f.coefficient_error()));
+}
+
+// The exact direction of image point (cx + u·hw, cy + v·hh) (u, v doubles), rounded to doubles
+// once: it is formed in double-double, each of its six operations within kOperationError of
+// its result (algebra/double_double.h), so the double hi is within |lo| + 8·kOperationError·M of
+// exact, M = |base| + |x||U| + |y||V| (6 operations, room to spare). Computed in doubles, the
+// image point and the direction were rounded eight times (about 10u·M): that was most of the
+// nodes' radii, which the interpolation multiplies by Λ² for every pixel.
+BernsteinBall node_ball(const LineRestrictor& restrictor, const algebra::CompiledPolynomial& f,
+                        const Camera& camera, double plane_t, double radius, double cx, double u,
+                        double hw, double cy, double v, double hh) {
+    using algebra::DoubleDouble;
+    const DoubleDouble x = algebra::two_product(u, hw) + cx;
+    const DoubleDouble y = algebra::two_product(v, hh) + cy;
+    DoubleDoubleLine line;
+    LineError error;
+    constexpr double kError = algebra::kOperationError * (1.0 + 0x1.0p-50);
+    for (int i = 0; i < 3; ++i) {
+        const DoubleDouble d = x * algebra::from_double(camera.per_column()[i]) +
+                               y * algebra::from_double(camera.per_row()[i]) + camera.base()[i];
+        // d within 4·kError·M of exact (M = |base| + |x||U| + |y||V|), 8 with room.
+        const double d_error =
+            8.0 * kError *
+                (std::abs(camera.base()[i]) + std::abs(x.hi) * std::abs(camera.per_column()[i]) +
+                 std::abs(y.hi) * std::abs(camera.per_row()[i])) +
+            0x1.0p-1070;
+        // origin e + D·d and direction R·d, one product and one sum, each within kError of
+        // its result, besides d's own error times |D| and R.
+        const DoubleDouble start = d * algebra::from_double(plane_t);
+        const DoubleDouble origin = start + camera.eye()[i];
+        const DoubleDouble direction = d * algebra::from_double(radius);
+        line.origin_hi[i] = origin.hi;
+        line.origin_lo[i] = origin.lo;
+        line.direction_hi[i] = direction.hi;
+        line.direction_lo[i] = direction.lo;
+        error.origin[i] = kError * (std::abs(start.hi) + std::abs(origin.hi)) * 2.0 +
+                          std::abs(plane_t) * d_error + 0x1.0p-1070;
+        error.direction[i] =
+            2.0 * kError * std::abs(direction.hi) + std::abs(radius) * d_error + 0x1.0p-1070;
+    }
+    return to_bernstein(restrictor.restrict_with_double_double_bounds(
+        line, error, f.double_double_coefficient_error()));
 }
 
 }  // namespace
@@ -66,7 +107,8 @@ bool CertifiedRayFamily::worth_building(const algebra::CompiledPolynomial& f, co
         for (int i = 0; i < grid; ++i) {
             const double x = rect.x0 + (rect.x1 - rect.x0) * (i + 0.5) / grid;
             const double y = rect.y0 + (rect.y1 - rect.y0) * (j + 0.5) / grid;
-            balls.push_back(line_ball(restrictor, f, camera, plane_t, radius, x, y, Vec3(0.0)));
+            balls.push_back(line_ball(restrictor, f, camera, plane_t, radius,
+                                      camera.direction(x, y), direction_rounding(camera, x, y)));
             for (int k = 0; k <= f.degree(); ++k) {
                 largest[k] = std::max(largest[k], balls.back().r[k]);
             }
@@ -103,27 +145,20 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
     }
     const auto nodes = static_cast<std::size_t>(n + 1);
     const LineRestrictor restrictor(f.terms());
+    const LineRestrictor precise_restrictor(f.terms(), f.low_words());
     const detail::ChebyshevInterpolation chebyshev(n);
     const Vec3& eye = camera.eye();
     const double plane_t = glm::dot(center - eye, camera.forward());
     t_start_ = plane_t - radius;
     t_width_ = 2.0 * radius;
-    const auto node_ball = [&](double image_x, double image_y, const Vec3& node_error) {
-        return line_ball(restrictor, f, camera, plane_t, radius, image_x, image_y, node_error);
-    };
-
-    // The nodes' balls: node (j, k) at u_j, v_k, whose image coordinates are themselves
-    // rounded (cx + hw·u_j: within 2.1u·(|cx| + hw)).
-    const Vec3 node_error = 2.1 * kUnit *
-                            ((center_x_ + half_width_) * glm::abs(camera.per_column()) +
-                             (center_y_ + half_height_) * glm::abs(camera.per_row()));
+    // The nodes' balls: node (j, k) at u_j, v_k (node_direction).
     std::vector<BernsteinBall> balls(nodes * nodes);
     for (std::size_t j = 0; j < nodes; ++j) {
         for (std::size_t k = 0; k < nodes; ++k) {
             BernsteinBall& ball = balls[j * nodes + k];
-            ball = node_ball(center_x_ + chebyshev.node(static_cast<int>(j)) * half_width_,
-                             center_y_ + chebyshev.node(static_cast<int>(k)) * half_height_,
-                             node_error);
+            ball = node_ball(precise_restrictor, f, camera, plane_t, radius, center_x_,
+                             chebyshev.node(static_cast<int>(j)), half_width_, center_y_,
+                             chebyshev.node(static_cast<int>(k)), half_height_);
             for (int i = 0; i <= n; ++i) {
                 if (!std::isfinite(ball.b[i]) || !std::isfinite(ball.r[i])) {
                     return;
@@ -148,22 +183,8 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
         }
     }
 
-    // The frame's magnitudes of the reference lines' origins and directions (both affine in
-    // u and v: at most the centre's magnitude plus the two slopes'), and how far a pixel's
-    // computed ray may be from its reference: the direction's rounding, and the rounding of
-    // u = (x − cx)/hw and v (within 4.1u·(|x| + cx) of the pixel, times |U|).
-    // The computed d_center's own rounding is added: over a narrow rectangle far from the
-    // image's left edge the slopes are too small for the 1e-12 factor to absorb it.
-    const Vec3 d_center = camera.direction(center_x_, center_y_);
-    const Vec3 d_center_error = direction_rounding(camera, center_x_, center_y_);
-    const Vec3 slope_u = half_width_ * glm::abs(camera.per_column()) + d_center_error;
-    const Vec3 slope_v = half_height_ * glm::abs(camera.per_row());
-    const Vec3 largest_origin =
-        (glm::abs(eye + plane_t * d_center) + std::abs(plane_t) * (slope_u + slope_v)) *
-            (1.0 + 1e-12) +
-        4.0 * kUnit * (glm::abs(eye) + std::abs(plane_t) * glm::abs(d_center));
-    const Vec3 largest_direction =
-        radius * (glm::abs(d_center) + slope_u + slope_v) * (1.0 + 1e-12);
+    // How far a pixel's computed ray may be from its reference: the direction's rounding, and
+    // the rounding of u = (x − cx)/hw and v (within 4.1u·(|x| + cx) of the pixel, times |U|).
     // (|x| ≤ cx + hw in the rectangle, so |x| + cx ≤ 2·(cx + hw).)
     const double largest_x = center_x_ + half_width_, largest_y = center_y_ + half_height_;
     const Vec3 pixel_error = direction_rounding(camera, largest_x, largest_y) +
@@ -174,13 +195,42 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
     LineError pixel_line;
     pixel_line.origin = std::abs(plane_t) * pixel_error;
     pixel_line.direction = radius * pixel_error;
-    RestrictionBall growth;
-    growth.polynomial.degree = n;
-    growth.radius = restrictor.growth_bound(largest_origin, largest_direction, pixel_line);
-    const BernsteinBall pixel_growth = to_bernstein(growth);
+    // What that distance can change in the restriction, over one tile of the rectangle at a
+    // time: the bound grows with the largest magnitudes of the reference lines' origins and
+    // directions, affine in u and v (at most the tile centre's magnitude plus the two slopes'),
+    // and over a whole frame those are far above any one ray's (a 64-pixel tile at the centre
+    // of a 512² frame of barth_decic: 1e-4 of the frame's bound). The tiles are widened by a
+    // pixel, for pixels that rounding assigns to a neighbour (ball_at). The computed centre's
+    // own rounding is added to the slope: over a narrow tile far from the image's left edge
+    // the slopes are too small for the 1e-12 factor to absorb it.
+    tiles_x_ =
+        std::clamp(static_cast<int>(std::ceil(2.0 * half_width_ / kTilePixels)), 1, kMostTiles);
+    tiles_y_ =
+        std::clamp(static_cast<int>(std::ceil(2.0 * half_height_ / kTilePixels)), 1, kMostTiles);
+    tile_width_ = 2.0 * half_width_ / tiles_x_;
+    tile_height_ = 2.0 * half_height_ / tiles_y_;
+    const auto tile_growth = [&](int column, int row) {
+        const double tx = rect.x0 + (column + 0.5) * tile_width_;
+        const double ty = rect.y0 + (row + 0.5) * tile_height_;
+        const Vec3 d_center = camera.direction(tx, ty);
+        const Vec3 slope_u = (0.5 * tile_width_ + 1.0) * glm::abs(camera.per_column()) +
+                             direction_rounding(camera, tx, ty);
+        const Vec3 slope_v = (0.5 * tile_height_ + 1.0) * glm::abs(camera.per_row());
+        const Vec3 largest_origin =
+            (glm::abs(eye + plane_t * d_center) + std::abs(plane_t) * (slope_u + slope_v)) *
+                (1.0 + 1e-12) +
+            4.0 * kUnit * (glm::abs(eye) + std::abs(plane_t) * glm::abs(d_center));
+        const Vec3 largest_direction =
+            radius * (glm::abs(d_center) + slope_u + slope_v) * (1.0 + 1e-12);
+        RestrictionBall growth;
+        growth.polynomial.degree = n;
+        growth.radius = restrictor.growth_bound(largest_origin, largest_direction, pixel_line);
+        return to_bernstein(growth);
+    };
 
     // The radius of every coefficient, for every pixel.
     const double lebesgue = chebyshev.lebesgue_bound();
+    std::vector<double> interpolation_radius(nodes);
     std::vector<double> node_values(nodes * nodes);
     for (int i = 0; i <= n; ++i) {
         const double* p = by_uv_.data() + static_cast<std::size_t>(i) * nodes * nodes;
@@ -210,14 +260,24 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
             }
         }
         // sup |B_i − interpolant| ≤ Λ²·max at the nodes (both of degree ≤ n in u and in v),
-        // plus the evaluations' rounding and the pixel rays' distance from their references.
-        radius_[i] = ((at_nodes * (1.0 + 4.0 * kUnit) + evaluation) * lebesgue * lebesgue +
-                      evaluation + pixel_growth.r[i]) *
-                     (1.0 + 1e-12);
+        // plus the evaluations' rounding (and, per tile, below, the pixel rays' distance from
+        // their references).
+        interpolation_radius[static_cast<std::size_t>(i)] =
+            (at_nodes * (1.0 + 4.0 * kUnit) + evaluation) * lebesgue * lebesgue + evaluation;
     }
+    tile_radius_.assign(static_cast<std::size_t>(tiles_x_ * tiles_y_) * nodes, 0.0);
     certified_ = true;
-    for (int i = 0; i <= n; ++i) {
-        certified_ = certified_ && std::isfinite(radius_[i]);
+    for (int row = 0; row < tiles_y_; ++row) {
+        for (int column = 0; column < tiles_x_; ++column) {
+            const BernsteinBall growth = tile_growth(column, row);
+            double* radius_of =
+                tile_radius_.data() + static_cast<std::size_t>(row * tiles_x_ + column) * nodes;
+            for (int i = 0; i <= n; ++i) {
+                radius_of[i] = (interpolation_radius[static_cast<std::size_t>(i)] + growth.r[i]) *
+                               (1.0 + 1e-12);
+                certified_ = certified_ && std::isfinite(radius_of[i]);
+            }
+        }
     }
 }
 
@@ -229,6 +289,9 @@ void CertifiedRayFamily::expand_row(double y, Row& out) const {
     }
     const auto nodes = static_cast<std::size_t>(n + 1);
     const double v = std::clamp((y - center_y_) / half_height_, -1.0, 1.0);
+    out.tile_row =
+        std::clamp(static_cast<int>(std::floor((y - (center_y_ - half_height_)) / tile_height_)), 0,
+                   tiles_y_ - 1);
     for (int i = 0; i <= n; ++i) {
         for (int a = 0; a <= n; ++a) {
             const double* in_v = by_uv_.data() + (static_cast<std::size_t>(i) * nodes + a) * nodes;
@@ -248,10 +311,16 @@ void CertifiedRayFamily::ball_at(const Row& row, double x, BernsteinBall& out) c
         return;
     }
     const double u = std::clamp((x - center_x_) / half_width_, -1.0, 1.0);
+    const int tile_column =
+        std::clamp(static_cast<int>(std::floor((x - (center_x_ - half_width_)) / tile_width_)), 0,
+                   tiles_x_ - 1);
+    const double* radius_of =
+        tile_radius_.data() + static_cast<std::size_t>(row.tile_row * tiles_x_ + tile_column) *
+                                  static_cast<std::size_t>(n + 1);
     // Horner in u for every B_i at once.
     for (int i = 0; i <= n; ++i) {
         out.b[i] = row.by_u[n][i];
-        out.r[i] = radius_[i];
+        out.r[i] = radius_of[i];
     }
     for (int a = n - 1; a >= 0; --a) {
         const auto& in_u = row.by_u[a];

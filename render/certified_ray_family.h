@@ -54,6 +54,7 @@ class CertifiedRayFamily {
     // coefficient of u^a in B_i (a pixel's Horner steps then run over i in parallel).
     struct Row {
         int degree = -1;
+        int tile_row = 0;  // which row of tiles the radii come from
         std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> by_u;
     };
     void expand_row(double y, Row& out) const;
@@ -85,7 +86,14 @@ class CertifiedRayFamily {
     bool certified_ = false;
     // by_uv_[(i·(n + 1) + a)·(n + 1) + b]: the coefficient of u^a·v^b in B_i.
     std::vector<double> by_uv_;
-    std::array<double, kMaxDegree + 1> radius_{};  // for every pixel of the frame
+    // The radii of the coefficients for the pixels of each tile of the rectangle (row-major,
+    // n + 1 a tile): the interpolation's bound, the same everywhere, and the tile's own bound
+    // on how far its pixels' rays are from their references.
+    static constexpr double kTilePixels = 64.0;
+    static constexpr int kMostTiles = 16;
+    int tiles_x_ = 1, tiles_y_ = 1;
+    double tile_width_ = 1.0, tile_height_ = 1.0;
+    std::vector<double> tile_radius_;
 };
 
 }  // namespace locus::render
