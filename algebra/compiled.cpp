@@ -534,7 +534,15 @@ CompiledPolynomial compile_surface(const Polynomial& f) {
     if (g.is_constant()) {
         throw InputError("equation", "a non-zero constant defines no surface");
     }
+    // The square-free part has a positive leading coefficient; it takes g's sign, so that the
+    // sides f > 0 and f < 0 (a two-sided material's colours, an SDF leaf's inside) stay those
+    // of the equation as written: 1 − x² − y² − z² is positive inside the ball. (Where g has a
+    // repeated factor the signs agree wherever that factor is positive: a square does not
+    // change sign across its surface, and the surface of a square-free part does.)
     Polynomial reduced = square_free_part(g);
+    if (g.leading_coefficient().sign() < 0) {
+        reduced = -reduced;
+    }
     if (reduced.total_degree() > kMaxCompiledDegree) {
         throw InputError("equation", "degree " + std::to_string(reduced.total_degree()) +
                                          " exceeds the supported maximum " +

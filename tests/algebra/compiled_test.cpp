@@ -49,6 +49,57 @@ TEST(CompileSurface, ReplacesNonReducedEquationsByTheirSquareFreePart) {
     EXPECT_EQ(mixed.degree(), 3);
 }
 
+// The compiled polynomial has the sign of the equation as written, so that its sides (a
+// two-sided material's colours, an SDF leaf's inside f < 0) are the ones the user wrote:
+// the square-free part's normalisation (a positive leading coefficient) made 1 − x² − y² − z²
+// render exactly as x² + y² + z² − 1, its outside in the colour of f > 0. The oracle is the
+// exact value of the written polynomial over Q at random rational points.
+TEST(CompileSurface, KeepsTheSignOfTheEquation) {
+    const CompiledPolynomial ball = compile_surface("1-x^2-y^2-z^2");
+    EXPECT_GT(ball.value({0.0, 0.0, 0.0}), 0.0);
+    EXPECT_LT(ball.value({2.0, 0.0, 0.0}), 0.0);
+    const CompiledPolynomial sphere = compile_surface("x^2+y^2+z^2-1");
+    EXPECT_LT(sphere.value({0.0, 0.0, 0.0}), 0.0);
+    // A repeated factor: the signs agree wherever it is positive (outside the sphere here).
+    const CompiledPolynomial repeated = compile_surface("-(x^2+y^2+z^2-1)^2*(z-5)");
+    EXPECT_TRUE(repeated.made_square_free());
+    EXPECT_GT(repeated.value({2.0, 0.0, 0.0}), 0.0);  // the equation: −9·(−5) > 0
+    EXPECT_LT(repeated.value({2.0, 0.0, 6.0}), 0.0);  // −(39)²·1 < 0
+    const RingPtr ring = PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
+    int compared = 0;
+    for (int seed = 0; seed < test::seed_count(40); ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::mt19937_64 rng(static_cast<std::uint64_t>(seed) + 1000);
+        Polynomial f = test::random_polynomial(ring, rng, 6, 4);
+        if (seed % 2 == 1) {
+            f = -f;
+        }
+        if (f.is_constant()) {
+            continue;
+        }
+        const CompiledPolynomial compiled = compile_surface(f);
+        if (compiled.made_square_free()) {
+            continue;
+        }
+        std::uniform_int_distribution<int> numerator(-20, 20);
+        for (int k = 0; k < 8; ++k) {
+            const std::array<Rational, 3> point = {Rational(numerator(rng), 8),
+                                                   Rational(numerator(rng), 8),
+                                                   Rational(numerator(rng), 8)};
+            const Rational exact = f.evaluate(point);
+            const double value =
+                compiled.value({fmpq_get_d(point[0].get()), fmpq_get_d(point[1].get()),
+                                fmpq_get_d(point[2].get())});
+            if (exact.sign() == 0 || std::abs(value) < 1e-9 * (1.0 + std::abs(value))) {
+                continue;
+            }
+            ++compared;
+            EXPECT_EQ(value > 0.0, exact.sign() > 0) << to_string(f);
+        }
+    }
+    EXPECT_GT(compared, 100);
+}
+
 TEST(CompiledPolynomial, ValueAndGradientAgreeWithExactEvaluation) {
     const RingPtr ring = PolyRing::make({"x", "y", "z"}, MonomialOrder::grevlex(3));
     for (int seed = 0; seed < test::seed_count(20); ++seed) {
