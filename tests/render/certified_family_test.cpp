@@ -168,6 +168,53 @@ TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
     EXPECT_GT(checked, 1000) << surface.name;
 }
 
+// Every pixel's ball holds the exact restriction of the exact surface along the camera's own
+// ray (doubles read exactly): the balls' radii, one per tile of the frame and coefficient, are
+// checked against the Bernstein coefficients computed over Q by the oracle. A frame of several
+// tiles in each direction, pixels of every tile (centres and points between them), surfaces
+// with decimal coefficients (the rounding of f itself) and random eyes.
+TEST(CertifiedFamily, EveryPixelsBallHoldsTheExactRestriction) {
+    for (const char* name : {"endrass_octic", "chmutov_octic", "kummer_quartic", "barth_decic"}) {
+        const bench::SuiteSurface surface = suite_surface(name);
+        const algebra::CompiledPolynomial f = algebra::compile_surface(surface.equation);
+        // The polynomial the balls are of: the equation's square-free part, a multiple of it by
+        // a rational (its coefficients made coprime integers), which the oracle reads with
+        // FLINT's parser.
+        const test::ExactRayOracle oracle(f.equation());
+        const double radius = surface.clip_radius;
+        std::mt19937_64 random(std::hash<std::string>{}(surface.name) + 7);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+        constexpr int kWidth = 200, kHeight = 150;
+        int checked = 0;
+        for (int view = 0; view < 2; ++view) {
+            Vec3 eye{unit(random), unit(random), unit(random)};
+            eye *= (2.5 + 1.5 * fraction(random)) * radius / glm::length(eye);
+            const Camera camera({eye, {0.0, 0.0, 0.0}, {0.3, 1.0, 0.1}, 35.0}, kWidth, kHeight);
+            const CertifiedRayFamily family(f, camera, {0.0, 0.0, 0.0}, radius,
+                                            {0.0, 0.0, kWidth, kHeight});
+            ASSERT_TRUE(family.certified()) << name;
+            auto row = std::make_unique<CertifiedRayFamily::Row>();
+            BernsteinBall ball;
+            for (int j = 0; j < kHeight; j += 11) {
+                const double y = j + (view == 0 ? 0.5 : fraction(random));
+                family.expand_row(y, *row);
+                for (int i = 0; i < kWidth; i += 9) {
+                    const double x = i + (view == 0 ? 0.5 : fraction(random));
+                    family.ball_at(*row, x, ball);
+                    const Ray ray = camera.ray(x, y);
+                    const int missed = oracle.ball_misses(
+                        to_point(ray.origin), to_point(ray.direction), family.t_start(),
+                        family.t_width(), ball.b.data(), ball.r.data(), ball.degree);
+                    ++checked;
+                    ASSERT_EQ(missed, -1) << name << ": pixel (" << x << ", " << y << ") of view "
+                                          << view << ", coefficient " << missed;
+                }
+            }
+        }
+        EXPECT_GT(checked, 500) << name;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Suite, GuidedSearch,
                          ::testing::Values("chmutov_octic", "endrass_octic", "torus",
                                            "kummer_quartic", "squared_sphere", "steiner_roman"));

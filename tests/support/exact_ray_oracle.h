@@ -307,6 +307,50 @@ class ExactRayOracle {
         return out;
     }
 
+    // Whether the ball b_i ± r_i (i ≤ n) holds the Bernstein coefficients of degree n of
+    // G(σ) = F(t0 + σ·w) on σ ∈ [0, 1], computed exactly: −1 when it does, else the first i
+    // outside (n + 1 when G's degree is above n).
+    int ball_misses(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
+                    double t0, double w, const double* b, const double* r, int n) const {
+        Poly F, line, G;
+        compose(origin, direction, F.p);
+        Q value, beta, term, coefficient, difference;
+        exact(value.q, t0);
+        fmpq_poly_set_coeff_fmpq(line.p, 0, value.q);
+        exact(value.q, w);
+        fmpq_poly_set_coeff_fmpq(line.p, 1, value.q);
+        fmpq_poly_compose(G.p, F.p, line.p);
+        if (fmpq_poly_degree(G.p) > n) {
+            return n + 1;
+        }
+        fmpz_t choose_i, choose_n;
+        fmpz_init(choose_i);
+        fmpz_init(choose_n);
+        int missed = -1;
+        for (int i = 0; i <= n && missed < 0; ++i) {
+            // β_i = Σ_{j ≤ i} C(i, j)/C(n, j)·g_j.
+            fmpq_zero(beta.q);
+            for (int j = 0; j <= i; ++j) {
+                fmpq_poly_get_coeff_fmpq(coefficient.q, G.p, j);
+                fmpz_bin_uiui(choose_i, static_cast<ulong>(i), static_cast<ulong>(j));
+                fmpz_bin_uiui(choose_n, static_cast<ulong>(n), static_cast<ulong>(j));
+                fmpq_mul_fmpz(term.q, coefficient.q, choose_i);
+                fmpq_div_fmpz(term.q, term.q, choose_n);
+                fmpq_add(beta.q, beta.q, term.q);
+            }
+            exact(value.q, b[i]);
+            fmpq_sub(difference.q, beta.q, value.q);
+            fmpq_abs(difference.q, difference.q);
+            exact(value.q, r[i]);
+            if (fmpq_cmp(difference.q, value.q) > 0) {
+                missed = i;
+            }
+        }
+        fmpz_clear(choose_i);
+        fmpz_clear(choose_n);
+        return missed;
+    }
+
   private:
     // F(t) = f(o + t·d) over Q, for the doubles o and d read exactly.
     void compose(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
