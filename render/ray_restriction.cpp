@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "algebra/double_double.h"
+#include "render/detail/uninitialized_array.h"
 
 namespace locus::render {
 
@@ -88,20 +89,7 @@ LineRestrictor::LineRestrictor(std::span<const algebra::CompiledTerm> terms,
 namespace {
 constexpr double kUnit = 0x1.0p-53;
 
-// Storage for N values of T left uninitialized, for tables whose every entry is written before
-// it is read: T may have default member initializers (DoubleDouble has), which would otherwise
-// zero all N at every construction. T must be trivially copyable and destructible, so that
-// assigning to an entry creates it.
-template <class T, std::size_t N>
-class UninitializedArray {
-    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
-
-  public:
-    T* data() { return std::launder(reinterpret_cast<T*>(storage_)); }
-
-  private:
-    alignas(T) std::byte storage_[N * sizeof(T)];
-};
+using detail::UninitializedArray;
 
 // The scalars of LineRestrictor::expand. `Plain` is a double. `Ball` is a double with a bound
 // on its error, propagated by the running error analysis of each operation (midpoint-radius
