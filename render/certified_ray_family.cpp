@@ -46,12 +46,13 @@ BernsteinBall line_ball(const LineRestrictor& restrictor, const algebra::Compile
         restrictor.restrict_with_bounds(origin, direction, error, f.coefficient_error()));
 }
 
-// The exact direction of image point (cx + u·hw, cy + v·hh) (u, v doubles), rounded to doubles
-// once: it is formed in double-double, each of its six operations within kOperationError of
-// its result (algebra/double_double.h), so the double hi is within |lo| + 8·kOperationError·M of
-// exact, M = |base| + |x||U| + |y||V| (6 operations, room to spare). Computed in doubles, the
-// image point and the direction were rounded eight times (about 10u·M): that was most of the
-// nodes' radii, which the interpolation multiplies by Λ² for every pixel.
+// The reference ray of the node at image point (cx + u·hw, cy + v·hh) (u, v doubles),
+// restricted in double-double: the image point, the direction d, the line's origin e + D·d and
+// direction R·d are formed in double-double, each operation within kOperationError of its
+// result (algebra/double_double.h), and the restriction carries those errors and its own. In
+// doubles the image point and the direction were rounded eight times (about 10u of their
+// magnitude) and the restriction's roundings added u·Σ|terms|: that was most of the nodes'
+// radii, which the interpolation multiplies by Λ² for every pixel of the frame.
 BernsteinBall node_ball(const LineRestrictor& restrictor, const algebra::CompiledPolynomial& f,
                         const Camera& camera, double plane_t, double radius, double cx, double u,
                         double hw, double cy, double v, double hh) {
@@ -151,7 +152,7 @@ CertifiedRayFamily::CertifiedRayFamily(const algebra::CompiledPolynomial& f, con
     const double plane_t = glm::dot(center - eye, camera.forward());
     t_start_ = plane_t - radius;
     t_width_ = 2.0 * radius;
-    // The nodes' balls: node (j, k) at u_j, v_k (node_direction).
+    // The nodes' balls: node (j, k) at u_j, v_k (node_ball).
     std::vector<BernsteinBall> balls(nodes * nodes);
     for (std::size_t j = 0; j < nodes; ++j) {
         for (std::size_t k = 0; k < nodes; ++k) {
