@@ -52,6 +52,14 @@ std::optional<Interval> clip_chord(const Ray& ray, double radius, double t0, dou
     return Interval{std::max(t0, (-b - root) / a), std::min(t0 + width, (-b + root) / a)};
 }
 
+// A camera looking at the origin from an eye at 2.5–4 clip radii in a random direction.
+Camera random_camera(std::mt19937_64& random, double radius, int width, int height) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    Vec3 eye{unit(random), unit(random), unit(random)};
+    eye *= (2.5 + 1.5 * fraction(random)) * radius / glm::length(eye);
+    return Camera({eye, {0.0, 0.0, 0.0}, {0.3, 1.0, 0.1}, 35.0}, width, height);
+}
+
 class GuidedSearch : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
@@ -65,10 +73,7 @@ TEST_P(GuidedSearch, EveryHintGivesACertifiedAnswer) {
     constexpr int kSize = 24;
     int checked = 0, hits = 0, guided_hits = 0;
     for (int view = 0; view < 2; ++view) {
-        // An eye at 2.5–4 clip radii in a random direction.
-        Vec3 eye{unit(random), unit(random), unit(random)};
-        eye *= (2.5 + 1.5 * fraction(random)) * radius / glm::length(eye);
-        const Camera camera({eye, {0.0, 0.0, 0.0}, {0.3, 1.0, 0.1}, 35.0}, kSize, kSize);
+        const Camera camera = random_camera(random, radius, kSize, kSize);
         const CertifiedRayFamily family(f, camera, {0.0, 0.0, 0.0}, radius,
                                         {0.0, 0.0, kSize, kSize});
         ASSERT_TRUE(family.certified());
@@ -183,13 +188,11 @@ TEST(CertifiedFamily, EveryPixelsBallHoldsTheExactRestriction) {
         const test::ExactRayOracle oracle(f.equation());
         const double radius = surface.clip_radius;
         std::mt19937_64 random(std::hash<std::string>{}(surface.name) + 7);
-        std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+        std::uniform_real_distribution<double> fraction(0.0, 1.0);
         constexpr int kWidth = 200, kHeight = 150;
         int checked = 0;
         for (int view = 0; view < 2; ++view) {
-            Vec3 eye{unit(random), unit(random), unit(random)};
-            eye *= (2.5 + 1.5 * fraction(random)) * radius / glm::length(eye);
-            const Camera camera({eye, {0.0, 0.0, 0.0}, {0.3, 1.0, 0.1}, 35.0}, kWidth, kHeight);
+            const Camera camera = random_camera(random, radius, kWidth, kHeight);
             const CertifiedRayFamily family(f, camera, {0.0, 0.0, 0.0}, radius,
                                             {0.0, 0.0, kWidth, kHeight});
             ASSERT_TRUE(family.certified()) << name;
