@@ -466,12 +466,26 @@ RootResult CertifiedTracer::first_hit_from(const BernsteinBall& ball, double t0,
         next.family_rest = guess.family_rest - 1;
         return first_hit(ray, interval, tolerance);
     }
-    // The interval is σ ∈ [s0, s_hi] of [t0, t0 + width].
-    const double s0 = std::max(0.0, (interval.lo - t0) / width);
-    const double s_hi = std::min(1.0, (interval.hi - t0) / width);
-    // An interval reaching past the ball's range (by roundings of the range's ends) is traced
-    // alone rather than searched in part.
-    if (!(s_hi > s0) || interval.lo < t0 || interval.hi > t0 + width) {
+    // The ball is the restriction to [T0, T0 + width] for the exact T0 that t0 rounds (within
+    // u·|t0|; a family's width is exact). An interval reaching within the roundings of the
+    // range's ends is traced alone rather than searched in part.
+    const double range_error = 2.0 * kUnit * (std::abs(t0) + std::abs(t0 + width)) + kTiny;
+    if (!(interval.hi > interval.lo) || interval.lo < t0 + range_error ||
+        interval.hi > t0 + width - range_error) {
+        return first_hit(ray, interval, tolerance);
+    }
+    // The interval in σ: an end t is at σ = (t − T0)/width, computed from t0 with two roundings
+    // more, so within (u·|t0| + 2u·(|t| + |t0|))/width + 2u of its exact σ. The search is
+    // widened by twice that at both ends, so that no root inside the interval falls in a
+    // sliver before s0 or past s_hi (isolate_first_root_near cuts its search at both); a root
+    // the widening lets in from outside is checked below, as one a piece reaching past the
+    // interval would be.
+    const double sigma_error =
+        4.0 * kUnit * (std::abs(t0) + std::abs(interval.lo) + std::abs(interval.hi)) / width +
+        4.0 * kUnit;
+    const double s0 = std::max(0.0, (interval.lo - t0) / width - sigma_error);
+    const double s_hi = std::min(1.0, (interval.hi - t0) / width + sigma_error);
+    if (!(s_hi > s0)) {
         return first_hit(ray, interval, tolerance);
     }
     // The neighbour's root and reach in σ (NaN when it had none: no guess).
