@@ -97,7 +97,15 @@ std::pair<render::SurfaceFrame, algebra::Polynomial> framed(const algebra::Polyn
         values[*var] = algebra::Polynomial::constant(ring, origin) +
                        algebra::Polynomial::constant(ring, scale) * values[*var];
     }
-    return {frame, f.substitute(values).primitive_part()};
+    // Divided by its (positive) content, not made primitive: primitive_part() also makes the
+    // leading coefficient positive, and the sides f > 0 and f < 0 must stay the equation's.
+    const algebra::Polynomial local = f.substitute(values);
+    if (local.is_zero()) {
+        return {frame, local};
+    }
+    algebra::Rational inverse;
+    fmpq_inv(inverse.get(), local.content().get());
+    return {frame, local * inverse};
 }
 
 void trim_to_domain(const std::string& path, const std::string& text, render::Surface& surface) {
