@@ -18,6 +18,7 @@
 #include <cmath>
 #include <vector>
 
+#include "render/certified_tracer.h"
 #include "render/root_finder.h"
 #include "render/vec3.h"
 
@@ -106,9 +107,10 @@ RootResult first_hit_trimmed(const PatchTrim* trim, const Ray& ray, const Interv
             hit.reason = "more roots off the patch than the degree allows";
             break;
         }
-        // Past this root: ten times the renderer's hit tolerance (1e-9 relative), so that the
-        // same root is not found again; roots closer than that are one point in a picture.
-        interval.lo = hit.t + 1e-8 * std::max(1.0, std::abs(hit.t));
+        // Past this root: ten times the renderer's hit tolerance (kRenderTolerance, relative),
+        // so that the same root is not found again; roots closer than that are one point in a
+        // picture.
+        interval.lo = hit.t + 10.0 * kRenderTolerance * std::max(1.0, std::abs(hit.t));
         if (interval.is_empty()) {
             hit = RootResult{};
             break;
