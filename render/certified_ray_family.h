@@ -7,14 +7,15 @@
 // polynomial in x = (t − D)/R ∈ [−1, 1], has Bernstein coefficients B_i(u, v) that are
 // polynomials of degree ≤ n in each of the image coordinates u, v ∈ [−1, 1] (the ray's direction
 // is affine in them). The frame restricts f along the (n + 1)² rays at the Chebyshev nodes with
-// rigorous radii (LineRestrictor::restrict_with_bounds), interpolates each B_i in u and v, and
-// bounds, once for the whole frame, how far the interpolant can be from the exact B_i anywhere:
+// rigorous radii (in double-double: LineRestrictor::restrict_with_double_double_bounds),
+// interpolates each B_i in u and v, and bounds, per tile of 64 pixels, how far the interpolant
+// can be from the exact B_i there:
 //   * at the nodes, the interpolant's value against the node's ball;
 //   * everywhere, that difference (a polynomial of degree ≤ n in u and in v) times the tensor
 //     Lebesgue constant of the nodes (ChebyshevInterpolation::lebesgue_bound squared);
 //   * the roundings of evaluating the interpolant for a row and a pixel;
 //   * the difference between the exact affine ray of a pixel's coordinates and the ray the
-//     camera computes in doubles (LineRestrictor::growth_bound over the frame's magnitudes).
+//     camera computes in doubles (LineRestrictor::growth_bound over the tile's magnitudes).
 // So the ball of every pixel's ray holds the exact restriction of the exact surface along the
 // camera's ray, and a pixel costs (n + 1)² multiply-adds to get it.
 #pragma once

@@ -40,10 +40,18 @@ inline constexpr double kTraceTolerance = 1e-12;
 // hit is placed to 1e-7·max(1, |t*|) — the spacing of the 32-bit floats its depth layer is
 // written in (6e-8 to 1.2e-7 relative; t is the depth along the view axis), a ten-thousandth
 // of a pixel's depth step at 512², and a hundredth of the shadow rays' offset from a surface
-// seen from ten times its size. Placing hits closer changes nothing the renderer writes: the
-// suite's 8-bit pictures at 1e-9 differ in one channel of one pixel by one code, and 1e-9 cost
-// endrass_octic's 512² frame 13 % more time (tier 3's evaluations at points, below).
+// seen from ten times its size (a tenth from a hundred times; smaller scenes: below). Placing hits
+// closer changes nothing the renderer writes: the suite's 8-bit pictures at 1e-9 differ in one
+// channel of one pixel by one code, and 1e-9 cost endrass_octic's 512² frame 13 % more time (tier
+// 3's evaluations at points, below).
 inline constexpr double kRenderTolerance = 1e-7;
+// The tolerance a frame's tracers take, for a scene whose clip regions reach `scale` from their
+// centres: kRenderTolerance, times the scale when that is below 1 — max(1, |t|) is then 1, and
+// the shadow rays' offset, 1e-4·scale, would otherwise be as small as the placement error (a
+// scene of size 2e-3 seen from a few sizes away). Depths are then placed to 1e-7 of the scene.
+inline double render_tolerance(double scale) {
+    return scale > 0.0 && scale < 1.0 ? kRenderTolerance * scale : kRenderTolerance;
+}
 
 // What one primary ray's answer tells the next ray of its row: where its root was (NaN: no root)
 // and the half-width of the piece that isolated it. A guess only (isolate_first_root_near):

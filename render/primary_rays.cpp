@@ -21,7 +21,7 @@ PrimaryRays trace_primary_rays(const algebra::CompiledPolynomial& f, const ClipR
     result.ray_lengths.resize(pixels);
     const double scale = bounding_sphere(region).radius;
     // SurfaceTracer's scale sets only the sphere-tracing tolerances.
-    const SurfaceTracer tracer(f, method, scale * tolerance_factor, kRenderTolerance);
+    const SurfaceTracer tracer(f, method, scale * tolerance_factor, render_tolerance(scale));
     const PrimaryTracer primary(f, camera, region, width, height, tracer);
     auto trace_row = [&](int y) {
         PrimaryTracer::Row row;

@@ -22,7 +22,7 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     std::vector<ShadedSurface> shaded;
     tracers.reserve(surfaces.size());
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
-        tracers.emplace_back(surfaces[i], scene.options.method, scale, kRenderTolerance,
+        tracers.emplace_back(surfaces[i], scene.options.method, scale, render_tolerance(scale),
                              scene.surfaces[i].frame);
     }
     std::vector<PrimaryTracer> primaries;
