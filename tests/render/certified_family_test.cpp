@@ -8,6 +8,8 @@
 // random eyes.
 #include <gtest/gtest.h>
 
+#include <flint/fmpq.h>
+
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -215,6 +217,63 @@ TEST(CertifiedFamily, EveryPixelsBallHoldsTheExactRestriction) {
             }
         }
         EXPECT_GT(checked, 500) << name;
+    }
+}
+
+// A root exactly at the end of a ray's interval is a hit (intervals are (lo, hi]) whatever the
+// family's range start rounds to: σ(hi) computed from t0 = fl(D − R) may fall below the root's
+// exact σ by u·|t0|/width, which first_hit_from widens its search by. Each trial's surface is
+// the plane z = c through the point of its ray at t* = hi, c written exactly as a rational;
+// eyes far from the clip sphere (t0 ≫ width), where that error is largest. (In these trials
+// the balls' radii blur G's sign over more than that sliver, so the search reports the piece
+// undecided rather than free of roots even without the widening: the test holds the answer,
+// not the widening itself.)
+TEST(CertifiedFamily, ARootAtTheIntervalsEndIsAHit) {
+    std::mt19937_64 random(2911);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    constexpr int kSize = 16;
+    const int trials = test::seed_count(200);
+    for (int trial = 0; trial < trials; ++trial) {
+        Vec3 eye{unit(random), unit(random), unit(random)};
+        eye *= (20.0 + 60.0 * fraction(random)) / glm::length(eye);
+        const double radius = 0.7 + fraction(random);
+        const Camera camera({eye, {0.0, 0.0, 0.0}, {0.3, 1.0, 0.1}, 2.0}, kSize, kSize);
+        const double x = kSize * fraction(random), y = kSize * fraction(random);
+        const Ray ray = camera.ray(x, y);
+        // The plane through the ray's point at t*, well inside the family's range of t.
+        const double t_star =
+            glm::dot(-eye, camera.forward()) + radius * (0.6 * fraction(random) - 0.3);
+        fmpq_t c, term, direction_z;
+        fmpq_init(c);
+        fmpq_init(term);
+        fmpq_init(direction_z);
+        test::ExactRayOracle::exact(c, ray.origin.z);
+        test::ExactRayOracle::exact(term, t_star);
+        test::ExactRayOracle::exact(direction_z, ray.direction.z);
+        fmpq_mul(term, term, direction_z);
+        fmpq_add(c, c, term);
+        char* text = fmpq_get_str(nullptr, 10, c);
+        const std::string equation = "z-(" + std::string(text) + ")";
+        flint_free(text);
+        fmpq_clear(c);
+        fmpq_clear(term);
+        fmpq_clear(direction_z);
+        const algebra::CompiledPolynomial f = algebra::compile_surface(equation);
+        const CertifiedRayFamily family(f, camera, {0.0, 0.0, 0.0}, radius,
+                                        {0.0, 0.0, kSize, kSize});
+        ASSERT_TRUE(family.certified());
+        auto row = std::make_unique<CertifiedRayFamily::Row>();
+        family.expand_row(y, *row);
+        BernsteinBall ball;
+        family.ball_at(*row, x, ball);
+        const CertifiedTracer tracer(f);
+        const RootResult r =
+            tracer.first_hit_from(ball, family.t_start(), family.t_width(), ray,
+                                  {t_star - 0.2 * radius, t_star}, kRenderTolerance);
+        ASSERT_EQ(r.status, RootStatus::hit)
+            << "trial " << trial << ": the root at the interval's end " << t_star << " ("
+            << equation << ")";
+        EXPECT_LE(std::abs(r.t - t_star), kRenderTolerance * std::max(1.0, std::abs(t_star)));
     }
 }
 

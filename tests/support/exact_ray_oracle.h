@@ -386,7 +386,9 @@ class ExactRayOracle {
         Q& operator=(const Q&) = delete;
         ~Q() { fmpq_clear(q); }
     };
-    // The exact value of a finite double.
+
+  public:
+    // The exact value of a finite double (for tests that build exact data beside the oracle).
     static void exact(fmpq_t out, double v) {
         int exponent = 0;
         const double mantissa = std::frexp(v, &exponent);
@@ -399,6 +401,7 @@ class ExactRayOracle {
         }
     }
 
+  private:
     fmpq_mpoly_ctx_t ctx_;
     fmpq_mpoly_t f_;
 };
