@@ -44,6 +44,11 @@ struct MembershipCertificate {
 MembershipCertificate ideal_membership(const Polynomial& f, Generators generators,
                                        const GroebnerOptions& options = {});
 
+// The reduced basis of ⟨generators⟩ under their ring's order, complete: the signature algorithm
+// (Buchberger's where a signature overflows); Timeout at options.deadline, Error past
+// options.max_basis_size. The basis every operation below starts from.
+std::vector<Polynomial> basis_of(Generators generators, const GroebnerOptions& options = {});
+
 // I ∩ Q[remaining variables]: the reduced basis (under the ring's order) of the elements
 // free of `variables` in a basis for the elimination order elim(variables) (CLO ch. 3 §1).
 std::vector<Polynomial> eliminate(Generators generators, std::span<const std::size_t> variables,

@@ -18,7 +18,8 @@
 namespace locus::cli {
 
 // A frame centred on `box` and scaled to it (a power of two), and f written in it: g(x') =
-// f(origin + scale·x') exactly (render/surface_frame.h says why). Patches are rendered in their
+// f(origin + scale·x') exactly, divided by its (positive) content, so that g keeps f's sides
+// (render/surface_frame.h says why). Patches are rendered in their
 // own frame, and so are equations whose clip region lies far from the origin.
 std::pair<render::SurfaceFrame, algebra::Polynomial> framed(const algebra::Polynomial& f,
                                                             const render::ClipBox& box);

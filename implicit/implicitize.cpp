@@ -6,7 +6,6 @@
 
 #include "algebra/error.h"
 #include "algebra/flint_convert.h"
-#include "algebra/groebner/signature_groebner.h"
 #include "algebra/ideal_ops.h"
 #include "implicit/dixon.h"
 
@@ -113,12 +112,7 @@ ImplicitResult implicitize(const Parametrization& map, const algebra::GroebnerOp
         algebra::GroebnerOptions graded;
         graded.deadline = options.deadline;
         graded.threads = options.threads;
-        algebra::GroebnerResult r =
-            algebra::signature_groebner_or_buchberger(in_coordinates, graded);
-        if (r.outcome == algebra::GroebnerOutcome::stopped_timeout) {
-            throw Timeout("the implicit equations' basis was not complete at the deadline");
-        }
-        in_coordinates = std::move(r.basis);
+        in_coordinates = algebra::basis_of(in_coordinates, graded);
     }
     result.generators = std::move(in_coordinates);
     result.stats.seconds =

@@ -114,7 +114,7 @@ void isolate_into(const BernsteinBall& g, int max_depth, double end, Isolation& 
     max_depth = std::clamp(max_depth, 0, 52);
     if (g.degree < 0) {
         out.kind = Isolation::Kind::undecided;  // the zero polynomial: every point is a root
-        out.piece = g;
+        copy_ball(g, out.piece);
         return;
     }
     // Pending right halves, innermost last; the piece being examined is [a, a + 2^-depth], in

@@ -59,9 +59,9 @@ std::string json_string(const std::string& text) {
     return out + "\"";
 }
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", v);
+std::string number(double v, int digits = 9) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
     return text;
 }
 
@@ -95,11 +95,7 @@ Fields fields_of(const HttpRequest& request) {
 // back with its next frame, and the same camera must give the same picture. (At 9 digits it
 // moved by 1e-9, and hits placed to the renderer's 1e-7 could then round a pixel the other way.)
 std::string camera_text(const render::CameraSpec& c) {
-    const auto exact = [](double v) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.17g", v);
-        return std::string(text);
-    };
+    const auto exact = [](double v) { return number(v, 17); };
     return exact(c.eye.x) + "," + exact(c.eye.y) + "," + exact(c.eye.z) + "," + exact(c.target.x) +
            "," + exact(c.target.y) + "," + exact(c.target.z) + "," + exact(c.up.x) + "," +
            exact(c.up.y) + "," + exact(c.up.z) + "," + exact(c.fov_degrees);
