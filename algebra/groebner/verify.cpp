@@ -81,7 +81,16 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
                                   int threads,
                                   const std::function<void(std::size_t, std::size_t)>& progress) {
     BasisCheck check;
-    if (basis.empty()) {
+    // Zero elements add nothing to the ideal and have no leading monomial: left out, as
+    // check_groebner_basis leaves them out of its pairs. `position` maps the others back to
+    // their places in `basis` for the failure message.
+    std::vector<std::size_t> position;
+    for (std::size_t i = 0; i < basis.size(); ++i) {
+        if (!basis[i].is_zero()) {
+            position.push_back(i);
+        }
+    }
+    if (position.empty()) {
         for (const Polynomial& g : generators) {
             ++check.generators_checked;
             if (!g.is_zero()) {
@@ -93,13 +102,13 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         }
         return check;
     }
-    const RingPtr& ring = basis.front().ring();
+    const RingPtr& ring = basis[position.front()].ring();
     const MonomialLayout& layout = ring->layout();
     std::vector<detail::BasisElement> elements;
     std::vector<detail::CriticalPair> pairs;
     detail::CriteriaCounts counts;
-    for (const Polynomial& g : basis) {
-        elements.push_back({detail::to_integer_polynomial(g), false});
+    for (const std::size_t i : position) {
+        elements.push_back({detail::to_integer_polynomial(basis[i]), false});
         detail::gebauer_moller_update(elements, pairs, elements.size() - 1, layout, counts);
     }
     // The pairs by the degree of their lcm, and within a degree from the largest lcm down:
@@ -245,8 +254,9 @@ BasisCheck certify_groebner_basis(std::span<const Polynomial> basis,
         } else if (failed < jobs) {
             const detail::CriticalPair& pair = pairs[failed - inputs.size()];
             check.ok = false;
-            check.failure = "S-polynomial of elements " + std::to_string(pair.first + 1) + " and " +
-                            std::to_string(pair.second + 1) + " does not reduce to zero";
+            check.failure = "S-polynomial of elements " + std::to_string(position[pair.first] + 1) +
+                            " and " + std::to_string(position[pair.second] + 1) +
+                            " does not reduce to zero";
         }
     } catch (const detail::ReductionInterrupted&) {
         throw Timeout("certification of the modular result");

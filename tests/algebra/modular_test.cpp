@@ -278,6 +278,40 @@ TEST(Modular, CertificationRejectsACorruptedBasis) {
     EXPECT_EQ(threaded.pairs_checked, single.pairs_checked);
 }
 
+// Zero elements of a candidate add nothing to its ideal: the certificate leaves them out, as the
+// rational check does (it read the leading monomial of an empty polynomial before; found in a
+// review: the modular route never passes one, but the function is public), and a failing
+// pair is named by the elements' places in the basis as given.
+TEST(Modular, CertificationLeavesZeroElementsOut) {
+    const IdealFile ideal =
+        parse_ideal_file("vars: x,y,z\norder: grevlex\nx^2+y*z-2\ny^2+x*z-3\nz^2+x*y-5\n");
+    const GroebnerResult r = modular_groebner(ideal.generators);
+    const Polynomial zero(r.basis.front().ring());
+    std::vector<Polynomial> with_zeros = {zero};
+    for (const Polynomial& g : r.basis) {
+        with_zeros.push_back(g);
+        with_zeros.push_back(zero);
+    }
+    for (int threads : {1, 2}) {
+        const BasisCheck check =
+            certify_groebner_basis(with_zeros, ideal.generators, std::nullopt, threads);
+        EXPECT_TRUE(check.ok) << check.failure;
+        EXPECT_EQ(check.pairs_checked,
+                  certify_groebner_basis(r.basis, ideal.generators).pairs_checked);
+    }
+    // Only zeros: the zero ideal, which holds no generator but the zero one.
+    const std::vector<Polynomial> zeros = {zero, zero};
+    EXPECT_FALSE(certify_groebner_basis(zeros, ideal.generators).ok);
+    EXPECT_TRUE(certify_groebner_basis(zeros, std::vector<Polynomial>{zero}).ok);
+    // Not a Gröbner basis (x² + yz − 2 and xy + z² − 5 alone: their S-polynomial leads with
+    // y²z), zeros between: the failing pair is named by its places among all five.
+    const std::vector<Polynomial> partial = {zero, ideal.generators[0], zero, ideal.generators[2],
+                                             zero};
+    const BasisCheck failed = certify_groebner_basis(partial, std::vector<Polynomial>{});
+    ASSERT_FALSE(failed.ok);
+    EXPECT_EQ(failed.failure, "S-polynomial of elements 2 and 4 does not reduce to zero");
+}
+
 // On several threads the generators are checked beside the pairs; a generator outside the
 // basis' ideal is still the failure reported, as on one thread, with no pair counted.
 TEST(Modular, ThreadedCertificationReportsTheFirstGeneratorOutsideTheIdeal) {

@@ -30,8 +30,9 @@ Units upper(const fmpz_t v);
 Units lower(mpz_srcptr v);
 
 // kSumTable[d] ≥ 64·log2(1 + 2^(−d/64)): what adding a number d units below the larger one
-// can add to it. Past the table, 2^−16 of a bit (0.006 units) is rounded up to one unit. Bytes,
-// so that the whole table stays in the first-level cache (the reducer reads it for every term).
+// can add to it. Past the table (d of 1 024 units, 16 bits, and more) that is under 0.0015
+// units, rounded up to one unit. Bytes, so that the whole table stays in the first-level cache
+// (the reducer reads it for every term).
 // The entries are the chords between nodes every kSumNodeStep units, rounded up:
 //   kSumTable[d] = ⌈(kSumNodeStep·n_i + (n_{i+1} − n_i)·r) / kSumNodeStep⌉, d = kSumNodeStep·i + r,
 // for the nodes n_i = kSumNodes[i] ≥ 64·log2(1 + 2^(−i·kSumNodeStep/64)). The function is convex,

@@ -145,7 +145,8 @@ void ResidueSystem::remainder(const std::uint32_t* digits, const Divisor& d, mp_
     const std::size_t n = d.limbs.size(), count = primes_.size() - 1;
     const std::uint64_t a = alpha(digits);
     // Σ y_i·((M/p_i) mod L) + α·(L − M mod L) ≡ Σ y_i·(M/p_i) − α·M = v (mod L), accumulated
-    // a limb at a time: each column sum stays below 2^(64 + 31 + 7) for up to 127 lanes.
+    // a limb at a time: each column sum stays below 2^(64 + 31 + 8) for the at most 256 lanes
+    // (kMostLanes), well inside the 128-bit accumulator.
     sum_.resize(n + 1);
     Wide carry = 0;
     for (std::size_t j = 0; j < n; ++j) {
