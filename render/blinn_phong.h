@@ -28,7 +28,7 @@ inline FacingSide facing_side(Vec3 gradient, const Vec3& view) {
     if (!(length > 0.0) || !std::isfinite(length)) {
         return {view, true};
     }
-    gradient /= length;
+    gradient *= 1.0 / length;  // one division instead of three
     if (glm::dot(gradient, view) < 0.0) {
         return {-gradient, false};
     }

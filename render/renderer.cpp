@@ -91,10 +91,13 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                             shader.shade(ray, best, best_t, seed, {ray.direction, step_x, step_y});
                         sums[column] += shading.color;
                         work[column] += shading.work;
-                        const double distance = best_t * glm::length(ray.direction);
-                        if (distance < nearest[column]) {
-                            nearest[column] = distance;
-                            normals[column] = shading.normal;
+                        // The depth and normal layers (AOVs) only: a square root a hit.
+                        if (execution.aovs) {
+                            const double distance = best_t * glm::length(ray.direction);
+                            if (distance < nearest[column]) {
+                                nearest[column] = distance;
+                                normals[column] = shading.normal;
+                            }
                         }
                     } else {
                         sums[column] += scene.background;

@@ -130,9 +130,12 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
     // A pattern is decided just inside the surface (against the outward normal), the same
     // for every pixel of a flat cell boundary.
     const Vec3 outward = side.outside ? side.normal : -side.normal;
-    const Material material = surface.material.at(
-        point - (1e-6 * scale_) * outward,
-        surface_footprint(ray.origin, sample, point, side.normal, 1e6 * scale_));
+    // Only a pattern needs the footprint (two more normalisations and divisions a hit).
+    const Material material =
+        surface.material.checker ? surface.material.at(point - (1e-6 * scale_) * outward,
+                                                       surface_footprint(ray.origin, sample, point,
+                                                                         side.normal, 1e6 * scale_))
+                                 : surface.material;
     ShadingResult result;
     const double ambient_factor =
         options_.ambient_occlusion ? ambient_occlusion(point, side.normal, seed, result.work) : 1.0;
