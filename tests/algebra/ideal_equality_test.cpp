@@ -181,24 +181,29 @@ TEST(IdealEquality, RandomSquareSystemsAgainstBuchberger) {
     EXPECT_GE(refuted, 10);
 }
 
-// The modular route runs the proof after the certification, and a refutation sends it on to
-// more primes. Both forced primes divide P = 2147483647 · 2147483629, so modulo each the input
-// is x^2 − 1, x^2 − 2: the unit ideal, on which they agree, and {1} passes the certification
-// (it is a Gröbner basis containing the input). Over Q the ideal has four solutions.
+// The modular route runs the proof with the certification (after it on one thread, beside it on
+// several), and a refutation sends it on to more primes. Both forced primes divide
+// P = 2147483647 · 2147483629, so modulo each the input is x^2 − 1, x^2 − 2: the unit ideal, on
+// which they agree, and {1} passes the certification (it is a Gröbner basis containing the
+// input). Over Q the ideal has four solutions.
 TEST(IdealEquality, TheModularRouteRetriesARefutedLift) {
     const IdealFile f = parse_ideal_file(
         "vars: x,y\norder: grevlex\nx^2+4611685975477714963*y-1\n"
         "x^2+4611685975477714963*y^2-2\n");
-    ModularOptions forced;
-    forced.primes = {2147483647u, 2147483629u};
-    ModularStats stats;
-    const GroebnerResult r = modular_groebner(f.generators, forced, &stats);
-    EXPECT_EQ(format_polynomials(r.basis, *f.ring, OutputFormat::normalized),
-              format_polynomials(exact_basis(f.generators), *f.ring, OutputFormat::normalized));
-    EXPECT_TRUE(stats.certified);
-    ASSERT_TRUE(stats.equality.has_value());
-    EXPECT_EQ(stats.equality->status, Status::proven) << stats.equality->argument;
-    EXPECT_GT(stats.primes_used.size(), 2u);
+    for (int threads : {1, 2}) {
+        ModularOptions forced;
+        forced.primes = {2147483647u, 2147483629u};
+        forced.threads = threads;
+        ModularStats stats;
+        const GroebnerResult r = modular_groebner(f.generators, forced, &stats);
+        EXPECT_EQ(format_polynomials(r.basis, *f.ring, OutputFormat::normalized),
+                  format_polynomials(exact_basis(f.generators), *f.ring, OutputFormat::normalized))
+            << threads;
+        EXPECT_TRUE(stats.certified);
+        ASSERT_TRUE(stats.equality.has_value());
+        EXPECT_EQ(stats.equality->status, Status::proven) << stats.equality->argument;
+        EXPECT_GT(stats.primes_used.size(), 2u);
+    }
     // Without the proof the wrong lift was the answer: the certificate alone accepts {1}.
     EXPECT_TRUE(check_groebner_basis(polynomials(f, {"1"}), f.generators).ok);
 }
