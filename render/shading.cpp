@@ -5,8 +5,10 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "render/blinn_phong.h"
+#include "render/detail/shading_lanes.h"
 
 namespace locus::render {
 
@@ -35,9 +37,32 @@ void frame_around(const Vec3& n, Vec3& a, Vec3& b) {
 
 }  // namespace
 
+namespace {
+
+bool has_avx512() {
+    static const bool supported = __builtin_cpu_supports("avx512f") != 0;
+    return supported;
+}
+
+// specular_power's square-and-multiply applies to the exponent as it is.
+bool whole_exponent(double e) {
+    return e >= 0.0 && e <= 1024.0 && e == std::floor(e);
+}
+
+}  // namespace
+
 Shader::Shader(std::span<const ShadedSurface> surfaces, std::span<const Light> lights,
                const RenderOptions& options, double scale)
-    : surfaces_(surfaces), lights_(lights), options_(options), scale_(scale) {}
+    : surfaces_(surfaces), lights_(lights), options_(options), scale_(scale) {
+    batched_ = has_avx512() && !options_.ambient_occlusion;
+    for (const Light& light : lights_) {
+        batched_ = batched_ && light.kind == Light::Kind::directional;
+    }
+    for (const ShadedSurface& surface : surfaces_) {
+        batched_ =
+            batched_ && !surface.material.checker && whole_exponent(surface.material.shininess);
+    }
+}
 
 bool Shader::is_occluded(const Ray& ray, double t_max, int& work) const {
     for (const ShadedSurface& surface : surfaces_) {
@@ -146,6 +171,54 @@ ShadingResult Shader::shade(const Ray& ray, std::size_t index, double t, std::ui
     result.color = blinn_phong(material, side, point, view, lights_, ambient_factor, visibility);
     result.normal = side.normal;
     return result;
+}
+
+void Shader::shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, const Vec3& step_y,
+                        std::span<ShadingResult> out) const {
+    if (!batched_) {
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            const HitToShade& hit = hits[i];
+            out[i] =
+                shade(hit.ray, hit.surface, hit.t, hit.seed, {hit.ray.direction, step_x, step_y});
+        }
+        return;
+    }
+    const std::size_t n = hits.size();
+    // A thread's, kept between calls; nothing below waits on parallel work (the shadow rays are
+    // traced on this thread), so no other call can begin on it meanwhile.
+    thread_local detail::HitLanes h;
+    h.resize(n, options_.shadows ? lights_.size() : 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const HitToShade& hit = hits[i];
+        const Vec3 point = hit.ray.at(hit.t);
+        const Vec3 gradient = surfaces_[hit.surface].tracer->gradient(point);
+        h.px[i] = point.x, h.py[i] = point.y, h.pz[i] = point.z;
+        h.dx[i] = hit.ray.direction.x, h.dy[i] = hit.ray.direction.y, h.dz[i] = hit.ray.direction.z;
+        h.gx[i] = gradient.x, h.gy[i] = gradient.y, h.gz[i] = gradient.z;
+    }
+    detail::facing_sides_avx512(h, n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Material& material = surfaces_[hits[i].surface].material;
+        const Vec3& base = h.outside[i] != 0 ? material.color : material.inside;
+        h.bx[i] = base.x, h.by[i] = base.y, h.bz[i] = base.z;
+        h.ambient[i] = material.ambient;
+        h.diffuse[i] = material.diffuse;
+        h.specular[i] = material.specular;
+        h.shininess[i] = static_cast<std::uint64_t>(material.shininess);
+        out[i].work = 0;
+        // Shadow rays as shade() casts them: for each light in turn that the normal faces.
+        if (options_.shadows) {
+            const Vec3 point{h.px[i], h.py[i], h.pz[i]}, normal{h.nx[i], h.ny[i], h.nz[i]};
+            for (std::size_t l = 0; l < lights_.size(); ++l) {
+                const Light& light = lights_[l];
+                h.visible[l * n + i] =
+                    glm::dot(normal, light.direction) > 0.0
+                        ? visibility(point, normal, light, hits[i].seed, out[i].work)
+                        : 0.0;
+            }
+        }
+    }
+    detail::blinn_phong_avx512(h, n, lights_, options_.shadows, out.data());
 }
 
 namespace {
