@@ -181,8 +181,8 @@ TEST(IdealEquality, RandomSquareSystemsAgainstBuchberger) {
     EXPECT_GE(refuted, 10);
 }
 
-// The modular route runs the proof with the certification (after it on one thread, beside it on
-// several), and a refutation sends it on to more primes. Both forced primes divide
+// The modular route runs the proof after the certification, on one thread or several, and a
+// refutation sends it on to more primes. Both forced primes divide
 // P = 2147483647 · 2147483629, so modulo each the input is x^2 − 1, x^2 − 2: the unit ideal, on
 // which they agree, and {1} passes the certification (it is a Gröbner basis containing the
 // input). Over Q the ideal has four solutions.
