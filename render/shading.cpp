@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "render/blinn_phong.h"
@@ -184,9 +185,23 @@ void Shader::shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, co
         return;
     }
     const std::size_t n = hits.size();
-    // A thread's, kept between calls; nothing below waits on parallel work (the shadow rays are
-    // traced on this thread), so no other call can begin on it meanwhile.
-    thread_local detail::HitLanes h;
+    // A thread's, kept between calls. Nothing below waits on parallel work today (the shadow
+    // rays are traced on this thread); should it, a call begun meanwhile on this thread gets
+    // arrays of its own.
+    thread_local detail::HitLanes shared;
+    thread_local bool shared_busy = false;
+    std::optional<detail::HitLanes> own;
+    detail::HitLanes& h = shared_busy ? own.emplace() : shared;
+    const bool holds_shared = !shared_busy;
+    shared_busy = true;
+    struct Release {
+        bool holds;
+        ~Release() {
+            if (holds) {
+                shared_busy = false;
+            }
+        }
+    } release{holds_shared};
     h.resize(n, options_.shadows ? lights_.size() : 0);
     for (std::size_t i = 0; i < n; ++i) {
         const HitToShade& hit = hits[i];
@@ -212,7 +227,7 @@ void Shader::shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, co
             for (std::size_t l = 0; l < lights_.size(); ++l) {
                 const Light& light = lights_[l];
                 h.visible[l * n + i] =
-                    glm::dot(normal, light.direction) > 0.0
+                    !(glm::dot(normal, light.direction) <= 0.0)  // as blinn_phong tests it
                         ? visibility(point, normal, light, hits[i].seed, out[i].work)
                         : 0.0;
             }

@@ -123,11 +123,12 @@ LOCUS_AVX512 void blinn_phong_avx512(const HitLanes& h, std::size_t n,
                           ly = _mm512_set1_pd(light.direction.y),
                           lz = _mm512_set1_pd(light.direction.z);
             const __m512d cosine = dot8(nx, ny, nz, lx, ly, lz);
-            __mmask8 lit = _mm512_cmp_pd_mask(cosine, zero, _CMP_GT_OQ) & in;
+            // blinn_phong skips a light when cosine <= 0 or visible <= 0: a NaN goes on.
+            __mmask8 lit = _mm512_cmp_pd_mask(cosine, zero, _CMP_NLE_UQ) & in;
             __m512d visible = one;
             if (shadows) {
                 visible = _mm512_maskz_loadu_pd(in, h.visible.data() + l * n + i);
-                lit &= _mm512_cmp_pd_mask(visible, zero, _CMP_GT_OQ);
+                lit &= _mm512_cmp_pd_mask(visible, zero, _CMP_NLE_UQ);
             }
             if (lit == 0) {
                 continue;

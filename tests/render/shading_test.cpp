@@ -72,6 +72,9 @@ std::vector<LightingSetup> setups() {
 }
 
 TEST(ShadeHits, AgreeWithShadeBitForBit) {
+    if (__builtin_cpu_supports("avx512f") == 0) {
+        GTEST_SKIP() << "no AVX-512 here: shade_hits is shade() one hit at a time";
+    }
     const algebra::CompiledPolynomial sphere = algebra::compile_surface("x^2+y^2+z^2-1");
     const algebra::CompiledPolynomial whitney = algebra::compile_surface("x^2-y^2*z");
     const SurfaceTracer sphere_tracer(sphere, TraceMethod::certified, 2.0);
