@@ -2,9 +2,9 @@
 
 #include <chrono>
 #include <cmath>
-#include <optional>
 
 #include "render/detail/image_rows.h"
+#include "render/detail/thread_scratch.h"
 #include "render/primary_tracer.h"
 #include "render/shading.h"
 
@@ -52,6 +52,11 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         std::size_t hit = 0;  // its place in `hits`, or kMiss
     };
     constexpr std::size_t kMiss = static_cast<std::size_t>(-1);
+    struct RowBuffers {
+        std::vector<TracedSample> traced;
+        std::vector<HitToShade> hits;
+        std::vector<ShadingResult> shadings;
+    };
     auto render_row = [&](int y) {
         std::vector<PrimaryTracer::Row> rows(surfaces.size());
         long row_hits = 0, row_unknown = 0, row_work = 0;
@@ -60,23 +65,9 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         std::vector<Vec3> normals(static_cast<std::size_t>(scene.width), Vec3(0.0));
         std::vector<int> work(static_cast<std::size_t>(scene.width), 0);
         // A thread's, kept from row to row: a row's worth allocated afresh each time was
-        // given back to the system and faulted in again (the 1024² frame 45 % slower). A row
-        // begun on this thread while its buffers are in use (were anything below to wait on
-        // parallel work, during which the thread may take another row) gets buffers of its own.
-        struct RowBuffers {
-            std::vector<TracedSample> traced;
-            std::vector<HitToShade> hits;
-            std::vector<ShadingResult> shadings;
-            bool busy = false;
-        };
-        thread_local RowBuffers shared;
-        std::optional<RowBuffers> own;
-        RowBuffers& buffers = shared.busy ? own.emplace() : shared;
-        buffers.busy = true;
-        struct Release {
-            RowBuffers& buffers;
-            ~Release() { buffers.busy = false; }
-        } release{buffers};
+        // given back to the system and faulted in again (the 1024² frame 45 % slower).
+        detail::ThreadScratch<RowBuffers> scratch;
+        RowBuffers& buffers = scratch.get();
         std::vector<TracedSample>& traced = buffers.traced;
         std::vector<HitToShade>& hits = buffers.hits;
         std::vector<ShadingResult>& shadings = buffers.shadings;

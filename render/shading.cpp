@@ -5,11 +5,11 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <vector>
 
 #include "render/blinn_phong.h"
 #include "render/detail/shading_lanes.h"
+#include "render/detail/thread_scratch.h"
 
 namespace locus::render {
 
@@ -185,23 +185,9 @@ void Shader::shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, co
         return;
     }
     const std::size_t n = hits.size();
-    // A thread's, kept between calls. Nothing below waits on parallel work today (the shadow
-    // rays are traced on this thread); should it, a call begun meanwhile on this thread gets
-    // arrays of its own.
-    thread_local detail::HitLanes shared;
-    thread_local bool shared_busy = false;
-    std::optional<detail::HitLanes> own;
-    detail::HitLanes& h = shared_busy ? own.emplace() : shared;
-    const bool holds_shared = !shared_busy;
-    shared_busy = true;
-    struct Release {
-        bool holds;
-        ~Release() {
-            if (holds) {
-                shared_busy = false;
-            }
-        }
-    } release{holds_shared};
+    // A thread's arrays, kept between calls.
+    detail::ThreadScratch<detail::HitLanes> scratch;
+    detail::HitLanes& h = scratch.get();
     h.resize(n, options_.shadows ? lights_.size() : 0);
     for (std::size_t i = 0; i < n; ++i) {
         const HitToShade& hit = hits[i];

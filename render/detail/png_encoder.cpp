@@ -4,7 +4,6 @@
 #include <array>
 #include <cstddef>
 #include <new>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +15,7 @@
 #include <zlib.h>
 
 #include "algebra/error.h"
+#include "render/detail/thread_scratch.h"
 
 namespace locus::render::detail {
 
@@ -147,20 +147,8 @@ Band deflate_band(int width, int first, int last, bool final, const RgbRowSource
     // pages faulted in, once per thread rather than once per band. A band begun while this
     // thread's stream is busy (a row source that runs parallel work of its own, during which
     // the thread may take another band) gets a stream of its own.
-    thread_local DeflateStream shared;
-    thread_local bool shared_busy = false;
-    std::optional<DeflateStream> own;
-    DeflateStream& stream = shared_busy ? own.emplace() : shared;
-    const bool holds_shared = !shared_busy;
-    shared_busy = true;
-    struct Release {
-        bool holds;
-        ~Release() {
-            if (holds) {
-                shared_busy = false;
-            }
-        }
-    } release{holds_shared};
+    ThreadScratch<DeflateStream> scratch;
+    DeflateStream& stream = scratch.get();
     stream.reset();
     Band band;
     // Room for a twelfth of the filtered bytes (a 512² frame's bands take a twentieth; more
