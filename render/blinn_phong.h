@@ -35,10 +35,15 @@ inline FacingSide facing_side(Vec3 gradient, const Vec3& view) {
     return {gradient, true};
 }
 
+// Whether specular_power takes x^e by squaring (a whole exponent up to 1024).
+inline bool squares_for_power(double e) {
+    return e >= 0.0 && e <= 1024.0 && e == std::floor(e);
+}
+
 // x^e, by squaring when the exponent is a whole number (the default 48 is): std::pow was 3 %
 // of a degree-6 frame, two calls per hit.
 inline double specular_power(double x, double e) {
-    if (e >= 0.0 && e <= 1024.0 && e == std::floor(e)) {
+    if (squares_for_power(e)) {
         auto n = static_cast<unsigned>(e);
         double result = 1.0;
         double square = x;

@@ -46,14 +46,11 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
     const Vec3 step_x = camera.per_column() / static_cast<double>(k);
     const Vec3 step_y = camera.per_row() / static_cast<double>(k);
     // A row of samples is traced first and its hits shaded after, together
-    // (Shader::shade_hits: several at a time where the processor and the scene allow).
-    struct TracedSample {
-        std::size_t column = 0;
-        std::size_t hit = 0;  // its place in `hits`, or kMiss
-    };
+    // (Shader::shade_hits: several at a time where the processor and the scene allow). Sample
+    // s of a row (k a pixel, across) is in column s / k; hit_of[s] is its place in `hits`.
     constexpr std::size_t kMiss = static_cast<std::size_t>(-1);
     struct RowBuffers {
-        std::vector<TracedSample> traced;
+        std::vector<std::size_t> hit_of;  // or kMiss
         std::vector<HitToShade> hits;
         std::vector<ShadingResult> shadings;
     };
@@ -68,11 +65,11 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
         // given back to the system and faulted in again (the 1024² frame 45 % slower).
         detail::ThreadScratch<RowBuffers> scratch;
         RowBuffers& buffers = scratch.get();
-        std::vector<TracedSample>& traced = buffers.traced;
+        std::vector<std::size_t>& hit_of = buffers.hit_of;
         std::vector<HitToShade>& hits = buffers.hits;
         std::vector<ShadingResult>& shadings = buffers.shadings;
         for (int sy = 0; sy < k; ++sy) {
-            traced.clear();
+            hit_of.clear();
             hits.clear();
             const double image_y = y + (sy + 0.5) / k;
             for (std::size_t s = 0; s < surfaces.size(); ++s) {
@@ -108,10 +105,10 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
                         const std::uint64_t seed =
                             (static_cast<std::uint64_t>(y) * scene.width + x) * 64 +
                             static_cast<std::uint64_t>(sy * k + sx);
-                        traced.push_back({column, hits.size()});
+                        hit_of.push_back(hits.size());
                         hits.push_back({ray, best, best_t, seed});
                     } else {
-                        traced.push_back({column, kMiss});
+                        hit_of.push_back(kMiss);
                     }
                 }
             }
@@ -119,18 +116,19 @@ RenderedImage render(const Scene& scene, std::span<const algebra::CompiledPolyno
             shader.shade_hits(hits, step_x, step_y, shadings);
             row_hits += static_cast<long>(hits.size());
             // In the order of the samples, as they were added one at a time.
-            for (const TracedSample& sample : traced) {
-                const std::size_t column = sample.column;
-                if (sample.hit == kMiss) {
+            for (std::size_t sample = 0; sample < hit_of.size(); ++sample) {
+                const std::size_t column = sample / static_cast<std::size_t>(k);
+                const std::size_t hit_index = hit_of[sample];
+                if (hit_index == kMiss) {
                     sums[column] += scene.background;
                     continue;
                 }
-                const ShadingResult& shading = shadings[sample.hit];
+                const ShadingResult& shading = shadings[hit_index];
                 sums[column] += shading.color;
                 work[column] += shading.work;
                 // The depth and normal layers (AOVs) only: a square root a hit.
                 if (execution.aovs) {
-                    const HitToShade& hit = hits[sample.hit];
+                    const HitToShade& hit = hits[hit_index];
                     const double distance = hit.t * glm::length(hit.ray.direction);
                     if (distance < nearest[column]) {
                         nearest[column] = distance;

@@ -36,18 +36,9 @@ void frame_around(const Vec3& n, Vec3& a, Vec3& b) {
     b = {q, sign + n.y * n.y * p, -n.y};
 }
 
-}  // namespace
-
-namespace {
-
 bool has_avx512() {
     static const bool supported = __builtin_cpu_supports("avx512f") != 0;
     return supported;
-}
-
-// specular_power's square-and-multiply applies to the exponent as it is.
-bool whole_exponent(double e) {
-    return e >= 0.0 && e <= 1024.0 && e == std::floor(e);
 }
 
 }  // namespace
@@ -61,7 +52,7 @@ Shader::Shader(std::span<const ShadedSurface> surfaces, std::span<const Light> l
     }
     for (const ShadedSurface& surface : surfaces_) {
         batched_ =
-            batched_ && !surface.material.checker && whole_exponent(surface.material.shininess);
+            batched_ && !surface.material.checker && squares_for_power(surface.material.shininess);
     }
 }
 
@@ -191,9 +182,7 @@ void Shader::shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, co
     h.resize(n, options_.shadows ? lights_.size() : 0);
     for (std::size_t i = 0; i < n; ++i) {
         const HitToShade& hit = hits[i];
-        const Vec3 point = hit.ray.at(hit.t);
-        const Vec3 gradient = surfaces_[hit.surface].tracer->gradient(point);
-        h.px[i] = point.x, h.py[i] = point.y, h.pz[i] = point.z;
+        const Vec3 gradient = surfaces_[hit.surface].tracer->gradient(hit.ray.at(hit.t));
         h.dx[i] = hit.ray.direction.x, h.dy[i] = hit.ray.direction.y, h.dz[i] = hit.ray.direction.z;
         h.gx[i] = gradient.x, h.gy[i] = gradient.y, h.gz[i] = gradient.z;
     }
@@ -209,7 +198,7 @@ void Shader::shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, co
         out[i].work = 0;
         // Shadow rays as shade() casts them: for each light in turn that the normal faces.
         if (options_.shadows) {
-            const Vec3 point{h.px[i], h.py[i], h.pz[i]}, normal{h.nx[i], h.ny[i], h.nz[i]};
+            const Vec3 point = hits[i].ray.at(hits[i].t), normal{h.nx[i], h.ny[i], h.nz[i]};
             for (std::size_t l = 0; l < lights_.size(); ++l) {
                 const Light& light = lights_[l];
                 h.visible[l * n + i] =

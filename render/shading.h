@@ -58,7 +58,7 @@ class Shader {
     // occlusion nor patterns nor a fractional shininess, the normals and the Blinn–Phong sums
     // are computed eight hits at a time: a hit's shading is a chain of square roots and
     // divisions (its view and normal, each light's half vector) that one hit at a time leaves
-    // waiting on their latency (20 % of the Whitney umbrella's frame, the gradient included).
+    // waiting on their latency (17 % of the Whitney umbrella's frame, the gradient included).
     void shade_hits(std::span<const HitToShade> hits, const Vec3& step_x, const Vec3& step_y,
                     std::span<ShadingResult> out) const;
 

@@ -15,9 +15,8 @@
 namespace locus::render::detail {
 
 void HitLanes::resize(std::size_t n, std::size_t lights) {
-    for (std::vector<double>* v :
-         {&px, &py, &pz, &dx, &dy, &dz, &gx, &gy,      &gz,      &nx,      &ny,
-          &nz, &vx, &vy, &vz, &bx, &by, &bz, &ambient, &diffuse, &specular}) {
+    for (std::vector<double>* v : {&dx, &dy, &dz, &gx, &gy, &gz, &nx, &ny, &nz, &vx, &vy, &vz, &bx,
+                                   &by, &bz, &ambient, &diffuse, &specular}) {
         v->resize(n);
     }
     outside.resize(n);
@@ -49,7 +48,8 @@ LOCUS_AVX512 inline __m512d negated(__m512d x) {
 }
 
 // One channel of blinn_phong's light term, c += (visible·intensity)·light colour ·
-// ((diffuse·cosine)·base + (specular·highlight)·1), on the lit lanes.
+// ((diffuse·cosine)·base + specular·highlight), on the lit lanes (its ·Vec3(1.0) changes no
+// value: x·1 = x).
 LOCUS_AVX512 inline __m512d add_light(__m512d c, __mmask8 lit, __m512d weight, double light_color,
                                       __m512d diffuse_cosine, __m512d base, __m512d shine) {
     const __m512d term = _mm512_add_pd(_mm512_mul_pd(diffuse_cosine, base), shine);
@@ -151,7 +151,7 @@ LOCUS_AVX512 void blinn_phong_avx512(const HitLanes& h, std::size_t n,
             }
             const __m512d weight = _mm512_mul_pd(visible, _mm512_set1_pd(light.intensity));
             const __m512d diffuse_cosine = _mm512_mul_pd(diffuse, cosine);
-            const __m512d shine = _mm512_mul_pd(_mm512_mul_pd(specular, highlight), one);
+            const __m512d shine = _mm512_mul_pd(specular, highlight);
             cx = add_light(cx, lit, weight, light.color.x, diffuse_cosine, bx, shine);
             cy = add_light(cy, lit, weight, light.color.y, diffuse_cosine, by, shine);
             cz = add_light(cz, lit, weight, light.color.z, diffuse_cosine, bz, shine);

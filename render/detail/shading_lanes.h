@@ -18,7 +18,6 @@ namespace locus::render::detail {
 
 // One entry a hit (a thread's, kept between rows).
 struct HitLanes {
-    std::vector<double> px, py, pz;     // the hit point
     std::vector<double> dx, dy, dz;     // the ray's direction
     std::vector<double> gx, gy, gz;     // ∇f there
     std::vector<double> nx, ny, nz;     // the unit normal towards the viewer (facing_sides_avx512)

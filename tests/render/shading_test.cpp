@@ -1,8 +1,9 @@
 // Shader::shade_hits against Shader::shade, its reference: the same colours, normals and shadow
 // work bit for bit, on hits of two surfaces with different materials, hits at singular points
-// (∇f = 0), rays of very different lengths, every batch size up to 37 (the vector kernel's
-// masked tail), with and without shadows, and in the scenes the kernel leaves to shade() (a
-// point light, ambient occlusion, a checker, a fractional exponent).
+// (∇f = 0), on a light's terminator and along grazing rays, rays of very different lengths, every
+// batch size up to 37 (the vector kernel's masked tail), with and without shadows, and in the
+// scenes the kernel leaves to shade() (a point light, ambient occlusion, a checker, a fractional
+// exponent).
 #include "render/shading.h"
 
 #include <gtest/gtest.h>
@@ -104,6 +105,19 @@ TEST(ShadeHits, AgreeWithShadeBitForBit) {
                     hit.surface = 1;
                     hit.ray.origin = {0.0, 0.0, 2.0 + unit(random)};
                     hit.ray.direction = {0.0, 0.0, -1.0};
+                }
+                if (i % 7 == 5 || i % 7 == 6) {
+                    // Near-degenerate on the sphere, where the normal is the point p: p on the
+                    // first light's terminator (n·L ≈ 0, whether the light counts is decided by
+                    // the last bits), or a grazing ray (d ⊥ p: n·view ≈ 0, which side is seen).
+                    const Vec3 across{unit(random), unit(random), unit(random)};
+                    const Vec3 p = glm::normalize(glm::cross(setup.lights[0].direction, across));
+                    const Vec3 d =
+                        i % 7 == 5 ? Vec3{0.3, -0.4, -1.0} : glm::normalize(glm::cross(p, across));
+                    hit.surface = 0;
+                    hit.t = 1.0 + std::abs(unit(random));
+                    hit.ray.origin = p - hit.t * d;
+                    hit.ray.direction = d;
                 }
                 hits.push_back(hit);
             }
